@@ -1,0 +1,27 @@
+//! # clockwork2d
+//!
+//! A deterministic 2D physics engine. Every number on the simulation path is
+//! fixed point ([`Fx`] = `I32F32` by default), so the same inputs give
+//! bit-identical results on every machine, architecture and build profile.
+//!
+//! ```
+//! use clockwork2d::prelude::*;
+//! let a = Circle::new(Vec2::new(fx(0.0), fx(0.0)), fx(1.0));
+//! let b = Circle::new(Vec2::new(fx(1.5), fx(0.0)), fx(1.0));
+//! let c = contact_circle_circle(&a, &b);
+//! assert_eq!(c.separation, fx(-0.5));
+//! assert_eq!(c.normal, Vec2::new(fx(1.0), fx(0.0)));
+//! ```
+#![forbid(unsafe_code)]
+#![deny(clippy::float_arithmetic)]
+
+pub mod geometry;
+pub mod math;
+
+pub use math::{Fx, Scalar, Vec2, WideScalar, fx};
+
+/// Everything a typical user needs, in one import.
+pub mod prelude {
+    pub use crate::geometry::*;
+    pub use crate::math::{Fx, Scalar, Vec2, WORLD_LIMIT, WideScalar, fx};
+}

@@ -1,0 +1,134 @@
+//! [`Scalar`] for the fixed-point types: `I32F32` (the default, [`Fx`]) and
+//! `I48F16`.
+//!
+//! Every method maps to the `fixed` crate's `saturating_*` / `checked_*`
+//! family, never to its operators (which panic in debug and wrap in release).
+
+use fixed::types::{I32F32, I48F16, I64F64, I96F32};
+
+use super::scalar::Scalar;
+
+/// The default scalar: 32 integer bits, 32 fraction bits.
+///
+/// Range ±2³¹ (about ±2.1e9), step 2⁻³² (about 2.3e-10). Products of two
+/// coordinates are formed in `I64F64` (see [`Scalar::wide_mul`]).
+pub type Fx = I32F32;
+
+/// Converts a float literal to [`Fx`] (API edge only; rounds to nearest,
+/// saturates, NaN becomes zero).
+///
+/// ```
+/// use clockwork2d::prelude::*;
+/// assert_eq!(fx(0.5), Fx::ONE.half());
+/// assert_eq!(fx(f64::NAN), Fx::ZERO);
+/// assert_eq!(fx(1e300), Fx::MAX);
+/// ```
+#[must_use]
+pub fn fx(value: f64) -> Fx {
+    Fx::from_f64(value)
+}
+
+macro_rules! impl_scalar_fixed {
+    ($t:ty, $wide:ty, $name:literal, $id:literal) => {
+        impl Scalar for $t {
+            type Wide = $wide;
+            const ZERO: Self = <$t>::ZERO;
+            const ONE: Self = <$t>::ONE;
+            const MAX: Self = <$t>::MAX;
+            const MIN: Self = <$t>::MIN;
+            const EPSILON: Self = <$t>::DELTA;
+            const NAME: &'static str = $name;
+            const ID: u8 = $id;
+            const IS_REFERENCE: bool = false;
+
+            #[inline]
+            fn from_f64(value: f64) -> Self {
+                if value.is_nan() {
+                    return <$t>::ZERO;
+                }
+                // Rounds to nearest, ties to even (the `fixed` crate's rule
+                // for float sources); out-of-range values saturate.
+                <$t>::saturating_from_num(value)
+            }
+            #[inline]
+            fn to_f64(self) -> f64 {
+                self.to_num::<f64>()
+            }
+            #[inline]
+            fn from_int(value: i32) -> Self {
+                <$t>::saturating_from_num(value)
+            }
+            #[inline]
+            fn to_hash_bits(self) -> u64 {
+                // Two's complement bits of the raw i64 value.
+                self.to_bits() as u64
+            }
+            #[inline]
+            fn add(self, rhs: Self) -> Self {
+                self.saturating_add(rhs)
+            }
+            #[inline]
+            fn sub(self, rhs: Self) -> Self {
+                self.saturating_sub(rhs)
+            }
+            #[inline]
+            fn mul(self, rhs: Self) -> Self {
+                self.saturating_mul(rhs)
+            }
+            #[inline]
+            fn div(self, rhs: Self) -> Self {
+                if rhs == <$t>::ZERO {
+                    if self > <$t>::ZERO {
+                        <$t>::MAX
+                    } else if self < <$t>::ZERO {
+                        <$t>::MIN
+                    } else {
+                        <$t>::ZERO
+                    }
+                } else {
+                    self.saturating_div(rhs)
+                }
+            }
+            #[inline]
+            fn checked_div(self, rhs: Self) -> Option<Self> {
+                <$t>::checked_div(self, rhs)
+            }
+            #[inline]
+            fn neg(self) -> Self {
+                self.saturating_neg()
+            }
+            #[inline]
+            fn abs(self) -> Self {
+                self.saturating_abs()
+            }
+            #[inline]
+            fn sqrt(self) -> Self {
+                if self <= <$t>::ZERO {
+                    <$t>::ZERO
+                } else {
+                    // The root of a positive value below 2^k never overflows
+                    // (sqrt(x) < x for x > 1, and < 1 otherwise); use the
+                    // overflowing form so even that cannot reach a debug panic.
+                    self.overflowing_sqrt().0
+                }
+            }
+            #[inline]
+            fn wide_mul(self, rhs: Self) -> $wide {
+                <$t>::wide_mul(self, rhs)
+            }
+            #[inline]
+            fn mul_int(self, rhs: i32) -> Self {
+                self.saturating_mul_int(i64::from(rhs))
+            }
+            #[inline]
+            fn half(self) -> Self {
+                // Arithmetic shift: exact except for the lowest bit, which is
+                // rounded toward negative infinity. Never overflows.
+                <$t>::from_bits(self.to_bits() >> 1)
+            }
+        }
+    };
+}
+
+impl_scalar_fixed!(I32F32, I64F64, "I32F32", 1);
+impl_scalar_fixed!(I48F16, I96F32, "I48F16", 2);

@@ -1,0 +1,136 @@
+//! Double-width intermediates for products of scalars.
+//!
+//! `I32F32 × I32F32` is exact in `I64F64`, `I48F16 × I48F16` in `I96F32`.
+//! Sums of a few such products (a dot product, a squared length, a ray
+//! discriminant) stay exact there as long as they are below 2⁶³ (resp. 2⁹⁵),
+//! which the documented world bounds guarantee with a wide margin.
+
+use core::fmt::Debug;
+
+use fixed::types::{I64F64, I96F32};
+
+use super::scalar::Scalar;
+
+/// A double-width value: the exact product of two [`Scalar`]s.
+///
+/// All operations saturate, like the narrow ones.
+pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd {
+    /// The narrow scalar this is the wide form of.
+    type Narrow: Scalar;
+    /// Zero.
+    const ZERO: Self;
+
+    /// Saturating addition.
+    fn add(self, rhs: Self) -> Self;
+    /// Saturating subtraction.
+    fn sub(self, rhs: Self) -> Self;
+    /// Widens a narrow value (exact).
+    fn from_narrow(value: Self::Narrow) -> Self;
+    /// Narrows with saturation; the low fraction bits are rounded toward
+    /// negative infinity.
+    fn narrow(self) -> Self::Narrow;
+    /// Square root, narrowed with saturation; zero for negative input.
+    ///
+    /// For fixed point the root is taken at full width and then truncated,
+    /// so the result is within one narrow ulp of the true root.
+    fn sqrt_narrow(self) -> Self::Narrow;
+    /// `true` if strictly below zero.
+    #[inline]
+    fn is_negative(self) -> bool {
+        self < Self::ZERO
+    }
+}
+
+macro_rules! impl_wide_fixed {
+    ($wide:ty, $narrow:ty) => {
+        impl WideScalar for $wide {
+            type Narrow = $narrow;
+            const ZERO: Self = <$wide>::ZERO;
+
+            #[inline]
+            fn add(self, rhs: Self) -> Self {
+                self.saturating_add(rhs)
+            }
+            #[inline]
+            fn sub(self, rhs: Self) -> Self {
+                self.saturating_sub(rhs)
+            }
+            #[inline]
+            fn from_narrow(value: $narrow) -> Self {
+                <$wide>::from_num(value)
+            }
+            #[inline]
+            fn narrow(self) -> $narrow {
+                <$narrow>::saturating_from_num(self)
+            }
+            #[inline]
+            fn sqrt_narrow(self) -> $narrow {
+                if self <= <$wide>::ZERO {
+                    return <$narrow>::ZERO;
+                }
+                // Fast path: when the value fits the narrow type and is at
+                // least 1, the narrow root is already exact to one ulp, and
+                // narrow roots are several times cheaper. Below 1 the narrow
+                // type would lose the low bits of tiny squared lengths
+                // (1 ulp² underflows to 0), so the wide root is used there.
+                if self >= <$wide>::ONE && self <= <$wide>::from_num(<$narrow>::MAX) {
+                    return self.narrow().sqrt();
+                }
+                // The root of a positive wide value never overflows the wide
+                // type (sqrt(x) < x for x > 1, sqrt(x) < 1 for x < 1).
+                <$narrow>::saturating_from_num(self.sqrt())
+            }
+        }
+    };
+}
+
+impl_wide_fixed!(I64F64, fixed::types::I32F32);
+impl_wide_fixed!(I96F32, fixed::types::I48F16);
+
+/// The wide type of the float references is `f64` for both: `f32` products
+/// are exact in `f64`, and `f64` has no wider hardware type (it is a
+/// reference, so plain `f64` rounding is what we want to compare against).
+macro_rules! impl_wide_float {
+    ($narrow:ty) => {
+        #[allow(clippy::float_arithmetic)]
+        impl WideScalar for WideFloat<$narrow> {
+            type Narrow = $narrow;
+            const ZERO: Self = WideFloat(0.0, core::marker::PhantomData);
+
+            #[inline]
+            fn add(self, rhs: Self) -> Self {
+                WideFloat(self.0 + rhs.0, core::marker::PhantomData)
+            }
+            #[inline]
+            fn sub(self, rhs: Self) -> Self {
+                WideFloat(self.0 - rhs.0, core::marker::PhantomData)
+            }
+            #[inline]
+            fn from_narrow(value: $narrow) -> Self {
+                WideFloat(f64::from(value), core::marker::PhantomData)
+            }
+            #[inline]
+            #[allow(clippy::cast_possible_truncation)]
+            fn narrow(self) -> $narrow {
+                self.0 as $narrow
+            }
+            #[inline]
+            #[allow(clippy::cast_possible_truncation)]
+            fn sqrt_narrow(self) -> $narrow {
+                if self.0 > 0.0 {
+                    self.0.sqrt() as $narrow
+                } else {
+                    0.0
+                }
+            }
+        }
+    };
+}
+
+/// The wide form of a float reference scalar: an `f64` tagged with the
+/// narrow type it came from.
+#[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+pub struct WideFloat<T>(pub f64, pub core::marker::PhantomData<T>);
+
+impl_wide_float!(f64);
+impl_wide_float!(f32);
