@@ -15,13 +15,25 @@
 #![forbid(unsafe_code)]
 #![deny(clippy::float_arithmetic)]
 
+mod collision;
+pub mod dynamics;
 pub mod geometry;
+pub mod hash;
 pub mod math;
+pub mod world;
 
+pub use dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
 pub use math::{Fx, Scalar, Vec2, WideScalar, fx};
+pub use world::{
+    BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
+};
 
 /// Everything a typical user needs, in one import.
 pub mod prelude {
+    pub use crate::dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
     pub use crate::geometry::*;
+    pub use crate::world::{
+        BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
+    };
     pub use crate::math::{Fx, Scalar, Vec2, WORLD_LIMIT, WideScalar, fx};
 }

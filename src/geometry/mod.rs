@@ -20,6 +20,7 @@ mod ray;
 mod ray_aabb;
 mod ray_circle;
 mod shapes;
+mod sweep;
 mod toi;
 
 pub use closest_point::{SegmentPoint, closest_point_on_segment};

@@ -114,7 +114,8 @@ impl<S: Scalar> Vec2<S> {
     }
 
     /// Squared length, saturated to the scalar's range. For `Fx` this is
-    /// exact while the length is below 46 340; use
+    /// the exact square rounded down to one ulp while the length is below
+    /// 46 340; use
     /// [`length_squared_wide`](Self::length_squared_wide) beyond.
     #[inline]
     #[must_use]
@@ -129,8 +130,9 @@ impl<S: Scalar> Vec2<S> {
         self.dot_wide(self)
     }
 
-    /// Length. For fixed point, within one ulp of the exact length for any
-    /// vector (the square is formed exactly in the wide type).
+    /// Length. For fixed point, the exact length rounded down to one ulp for
+    /// any vector whose length fits the scalar (the square is formed exactly
+    /// in the wide type); longer vectors (beyond 2³¹ for `Fx`) give `MAX`.
     #[inline]
     #[must_use]
     pub fn length(self) -> S {
@@ -146,18 +148,18 @@ impl<S: Scalar> Vec2<S> {
 
     /// The unit vector in this direction, or `None` for the zero vector.
     ///
-    /// Accuracy: each component is `c / |v|` with `|v|` within one ulp, so
-    /// the result has unit length within about `2 ulp / |v| + 1 ulp`
-    /// (for `Fx` and `|v| ≥ 1e-3`, better than 1e-6).
+    /// Accuracy (fixed point): each component is `c / len`, where `len` is
+    /// `|v|` rounded down by less than one ulp, truncated toward zero by
+    /// less than one ulp. So the result's length is in
+    /// `(1 − √2 ulp, 1 + ulp / (|v| − ulp))`, within `2 ulp / |v| + 2 ulp`
+    /// of 1 (for `Fx` and `|v| ≥ 1e-3`, better than 1e-6), and its direction
+    /// is off by at most about `√2 ulp` (its cross product with `v / |v|`).
+    /// This holds for every nonzero vector, including those whose length
+    /// saturates.
     #[inline]
     #[must_use]
     pub fn try_normalize(self) -> Option<Self> {
-        let len = self.length();
-        if len <= S::ZERO {
-            return None;
-        }
-        // |c| <= len, so each quotient is in [-1, 1] and cannot overflow.
-        Some(Vec2::new(self.x.div(len), self.y.div(len)))
+        self.try_normalize_with_length().map(|(unit, _)| unit)
     }
 
     /// The unit vector in this direction, or zero for the zero vector.
@@ -168,6 +170,9 @@ impl<S: Scalar> Vec2<S> {
     }
 
     /// The unit vector and the length, or `None` for the zero vector.
+    ///
+    /// The length saturates like [`length`](Self::length); the unit vector
+    /// has the accuracy documented on [`try_normalize`](Self::try_normalize).
     #[inline]
     #[must_use]
     pub fn try_normalize_with_length(self) -> Option<(Self, S)> {
@@ -175,6 +180,16 @@ impl<S: Scalar> Vec2<S> {
         if len <= S::ZERO {
             return None;
         }
+        if len == S::MAX {
+            // The length saturated (|v| ≥ 2³¹ for `Fx`, far outside the
+            // world): dividing by the clamped length would give a vector up
+            // to √2 long. Halving both components brings |v| below 2^30.5;
+            // the dropped lowest bits are a relative change near 2⁻⁶².
+            let half = Vec2::new(self.x.half(), self.y.half());
+            let half_len = half.length();
+            return Some((Vec2::new(half.x.div(half_len), half.y.div(half_len)), len));
+        }
+        // |c| <= len, so each quotient is in [-1, 1] and cannot overflow.
         Some((Vec2::new(self.x.div(len), self.y.div(len)), len))
     }
 

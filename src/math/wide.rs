@@ -31,8 +31,10 @@ pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd {
     fn narrow(self) -> Self::Narrow;
     /// Square root, narrowed with saturation; zero for negative input.
     ///
-    /// For fixed point the root is taken at full width and then truncated,
-    /// so the result is within one narrow ulp of the true root.
+    /// For fixed point the result is the true root rounded down to a narrow
+    /// ulp (`r ≤ √x < r + ulp`, so a nonzero value, even one wide ulp, has a
+    /// nonzero root); it saturates to the narrow `MAX` once `√x` is past the
+    /// narrow range (`x ≥ 2⁶²` for `I64F64`, `x ≥ 2⁹⁴` for `I96F32`).
     fn sqrt_narrow(self) -> Self::Narrow;
     /// `true` if strictly below zero.
     #[inline]
@@ -74,7 +76,15 @@ macro_rules! impl_wide_fixed {
                 // type would lose the low bits of tiny squared lengths
                 // (1 ulp² underflows to 0), so the wide root is used there.
                 if self >= <$wide>::ONE && self <= <$wide>::from_num(<$narrow>::MAX) {
-                    return self.narrow().sqrt();
+                    // Narrowing drops fraction bits (Δ < 1 ulp), which can
+                    // lower the root by up to Δ/(2√x) ≤ ½ ulp for x ≥ 1, so
+                    // the floored narrow root is floor(√x) or one ulp below
+                    // it (e.g. x = (1 + ulp)² gives 1). One exact correction
+                    // step restores floor(√x); (r + ulp)² is below the
+                    // narrow MAX plus 1, far inside the wide range.
+                    let root = self.narrow().sqrt();
+                    let up = root.saturating_add(<$narrow>::DELTA);
+                    return if up.wide_mul(up) <= self { up } else { root };
                 }
                 // The root of a positive wide value never overflows the wide
                 // type (sqrt(x) < x for x > 1, sqrt(x) < 1 for x < 1).

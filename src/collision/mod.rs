@@ -1,0 +1,11 @@
+//! Collision: broad phase, narrow-phase dispatch and the contact cache.
+
+mod broad_phase;
+mod contact_cache;
+mod narrow_phase;
+mod scratch;
+
+pub(crate) use broad_phase::{Proxy, ProxyClass, find_pairs};
+pub(crate) use contact_cache::CachedContact;
+pub(crate) use narrow_phase::{contact_between, shape_toi};
+pub(crate) use scratch::StepScratch;

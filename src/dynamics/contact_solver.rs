@@ -1,0 +1,170 @@
+//! Sequential impulses for contacts, with warm starting, speculative
+//! contacts, restitution, Coulomb friction, and a separate position pass.
+//!
+//! # The model (no rotation, one point per pair)
+//!
+//! With bodies that cannot rotate, a contact's Jacobian is just `±n`, so the
+//! effective mass along the normal and along the tangent is the same scalar
+//! `m = 1 / (w_a + w_b)` (`w` = inverse mass) and the contact point does not
+//! matter. For relative normal velocity `v_n = (v_b - v_a)·n`:
+//!
+//! * **Speculative:** with a gap `s > 0` the constraint is `v_n ≥ -s / h`: the
+//!   bodies may close the gap exactly within the step but not more. The
+//!   impact happens "the instant before it hits", with no later push-back.
+//! * **Touching/penetrating** (`s ≤ 0`): `v_n ≥ 0`. Penetration is removed
+//!   by the position pass, which moves bodies without touching velocities,
+//!   so correcting it adds no energy.
+//! * **Restitution:** if the pair approached faster than the threshold at
+//!   the start of the step and will meet within it (`-v_n0·h ≥ s`), the
+//!   target becomes `v_n ≥ -e·v_n0`.
+//! * **Friction:** `v_t = (v_b - v_a)·t` with `t = perp(n)`, accumulated
+//!   impulse clamped to `|λ_t| ≤ μ λ_n`.
+//!
+//! Each impulse is accumulated and clamped (`λ_n ≥ 0`), so iterating converges
+//! to the projected solution; the accumulated impulses of the previous step
+//! warm-start the next, which is what lets stacks settle in few iterations.
+
+use crate::math::{Scalar, Vec2};
+
+/// One contact prepared for the solver.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct ContactConstraint<S: Scalar> {
+    pub(crate) a: u32,
+    pub(crate) b: u32,
+    /// Unit normal from a to b.
+    pub(crate) normal: Vec2<S>,
+    /// Separation at the start of the substep.
+    pub(crate) separation: S,
+    /// Inverse masses as the solver sees them.
+    pub(crate) inverse_mass_a: S,
+    pub(crate) inverse_mass_b: S,
+    /// `1 / (w_a + w_b)`.
+    pub(crate) effective_mass: S,
+    pub(crate) friction: S,
+    /// The lowest allowed relative normal velocity (speculative bound or
+    /// restitution target).
+    pub(crate) target_velocity: S,
+    pub(crate) normal_impulse: S,
+    pub(crate) tangent_impulse: S,
+}
+
+impl<S: Scalar> ContactConstraint<S> {
+    /// Sets the velocity target from the separation, the approach speed
+    /// at the start of the substep and the restitution.
+    pub(crate) fn prepare_target(
+        &mut self,
+        relative_normal_velocity: S,
+        restitution: S,
+        restitution_threshold: S,
+        h: S,
+        inverse_h: S,
+    ) {
+        // Speculative bound: v_n ≥ -max(s, 0)/h.
+        let speculative = if self.separation.is_positive() {
+            self.separation.mul(inverse_h).neg()
+        } else {
+            S::ZERO
+        };
+        let approaching_fast = relative_normal_velocity < restitution_threshold.neg();
+        // Will the gap close within this substep? -v_n0·h ≥ s.
+        let meets = relative_normal_velocity.neg().mul(h) >= self.separation;
+        self.target_velocity = if restitution.is_positive() && approaching_fast && meets {
+            speculative.max(restitution.mul(relative_normal_velocity).neg())
+        } else {
+            speculative
+        };
+    }
+}
+
+/// Applies the warm-start impulses.
+pub(crate) fn warm_start<S: Scalar>(constraints: &[ContactConstraint<S>], velocities: &mut [Vec2<S>]) {
+    for c in constraints {
+        let tangent = c.normal.perp();
+        let impulse = c.normal.scale(c.normal_impulse) + tangent.scale(c.tangent_impulse);
+        apply(c, impulse, velocities);
+    }
+}
+
+#[inline]
+fn apply<S: Scalar>(c: &ContactConstraint<S>, impulse: Vec2<S>, velocities: &mut [Vec2<S>]) {
+    let (ia, ib) = (c.a as usize, c.b as usize);
+    if c.inverse_mass_a.is_positive() {
+        velocities[ia] -= impulse.scale(c.inverse_mass_a);
+    }
+    if c.inverse_mass_b.is_positive() {
+        velocities[ib] += impulse.scale(c.inverse_mass_b);
+    }
+}
+
+/// One sequential-impulse pass over all contacts, in their (sorted) order.
+pub(crate) fn solve_velocities<S: Scalar>(
+    constraints: &mut [ContactConstraint<S>],
+    velocities: &mut [Vec2<S>],
+) {
+    for c in constraints.iter_mut() {
+        let (ia, ib) = (c.a as usize, c.b as usize);
+        let tangent = c.normal.perp();
+
+        // Friction first, bounded by the normal impulse of the last pass.
+        let relative = velocities[ib] - velocities[ia];
+        let vt = relative.dot(tangent);
+        let limit = c.friction.mul(c.normal_impulse);
+        let old_t = c.tangent_impulse;
+        c.tangent_impulse = old_t
+            .sub(vt.mul(c.effective_mass))
+            .clamp(limit.neg(), limit);
+        let dt_impulse = c.tangent_impulse.sub(old_t);
+        if dt_impulse != S::ZERO {
+            let snapshot = *c;
+            apply(&snapshot, tangent.scale(dt_impulse), velocities);
+        }
+
+        // Normal: drive v_n to at least the target, accumulated λ ≥ 0.
+        let relative = velocities[ib] - velocities[ia];
+        let vn = relative.dot(c.normal);
+        let old_n = c.normal_impulse;
+        let lambda = c.target_velocity.sub(vn).mul(c.effective_mass);
+        c.normal_impulse = old_n.add(lambda).max(S::ZERO);
+        let dn = c.normal_impulse.sub(old_n);
+        if dn != S::ZERO {
+            let snapshot = *c;
+            apply(&snapshot, c.normal.scale(dn), velocities);
+        }
+    }
+}
+
+/// One pass of position correction on the substep's displacements.
+///
+/// The current separation is `s = s0 + (Δb - Δa)·n` (exact for translation
+/// with a fixed normal). Penetration beyond the slop is reduced by the
+/// fraction `beta`, at most `max_correction` per pass; the correction moves
+/// positions only, so it cannot add kinetic energy.
+pub(crate) fn solve_positions<S: Scalar>(
+    constraints: &[ContactConstraint<S>],
+    displacements: &mut [Vec2<S>],
+    slop: S,
+    beta: S,
+    max_correction: S,
+) {
+    for c in constraints {
+        let (ia, ib) = (c.a as usize, c.b as usize);
+        let separation = c
+            .separation
+            .add((displacements[ib] - displacements[ia]).dot(c.normal));
+        // C ≤ 0 is the penetration beyond the slop, scaled and bounded.
+        let correction = beta
+            .mul(separation.add(slop))
+            .clamp(max_correction.neg(), S::ZERO);
+        if correction == S::ZERO {
+            continue;
+        }
+        let impulse = correction.neg().mul(c.effective_mass);
+        let push = c.normal.scale(impulse);
+        if c.inverse_mass_a.is_positive() {
+            displacements[ia] -= push.scale(c.inverse_mass_a);
+        }
+        if c.inverse_mass_b.is_positive() {
+            displacements[ib] += push.scale(c.inverse_mass_b);
+        }
+    }
+}

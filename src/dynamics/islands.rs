@@ -1,0 +1,58 @@
+//! Islands by union-find, in slot-index order.
+//!
+//! Each root is the smallest slot index of its island (union always makes the
+//! smaller root the parent), so the result does not depend on the order in
+//! which pairs are joined: the same on every machine.
+
+/// Resets `parents` so every one of `count` slots is its own island.
+pub(crate) fn reset(parents: &mut Vec<u32>, count: usize) {
+    parents.clear();
+    parents.extend((0..count).map(|i| u32::try_from(i).unwrap_or(u32::MAX)));
+}
+
+/// The root of `i`, compressing the path on the way.
+pub(crate) fn find(parents: &mut [u32], i: u32) -> u32 {
+    let mut root = i;
+    while parents[root as usize] != root {
+        root = parents[root as usize];
+    }
+    let mut node = i;
+    while parents[node as usize] != root {
+        let next = parents[node as usize];
+        parents[node as usize] = root;
+        node = next;
+    }
+    root
+}
+
+/// Joins the islands of `a` and `b`; the smaller root becomes the parent.
+pub(crate) fn union(parents: &mut [u32], a: u32, b: u32) {
+    let (ra, rb) = (find(parents, a), find(parents, b));
+    if ra < rb {
+        parents[rb as usize] = ra;
+    } else if rb < ra {
+        parents[ra as usize] = rb;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn roots_are_smallest_members_whatever_the_union_order() {
+        let mut p = Vec::new();
+        reset(&mut p, 6);
+        union(&mut p, 5, 3);
+        union(&mut p, 3, 4);
+        union(&mut p, 1, 2);
+        assert_eq!(find(&mut p, 5), 3);
+        assert_eq!(find(&mut p, 4), 3);
+        assert_eq!(find(&mut p, 2), 1);
+        union(&mut p, 4, 2);
+        for i in 1..6 {
+            assert_eq!(find(&mut p, i), 1);
+        }
+        assert_eq!(find(&mut p, 0), 0);
+    }
+}

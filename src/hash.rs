@@ -1,0 +1,292 @@
+//! The state hash: a fixed, documented digest of everything that affects
+//! later steps.
+//!
+//! # Algorithm (version 1)
+//!
+//! The hash is **FNV-1a, 64-bit** (offset basis `0xcbf29ce484222325`, prime
+//! `0x100000001b3`), applied byte by byte. Every value is fed as its
+//! canonical little-endian bytes, whatever the machine's endianness:
+//! `u8` as one byte, `u32` as 4 bytes, `u64` and every scalar as 8 bytes
+//! (a scalar's bits are [`Scalar::to_hash_bits`]: the raw two's complement
+//! value for fixed point), booleans as one byte 0/1.
+//!
+//! The state is split into parts, each hashed separately from a fresh
+//! basis, so that a mismatch can name the part:
+//!
+//! 1. `world`: scalar id (u8), tick (u64), then every settings field in
+//!    declaration order (vectors as x then y; the bounds as centre then half
+//!    extents; counts as u32; `sleep_enabled` as a byte).
+//! 2. `bodies`: slot count (u32), then per slot in index order: generation
+//!    (u32), present (byte), and if present: kind (0 fixed, 1 kinematic,
+//!    2 dynamic), shape (0 + radius, or 1 + half extents x, y), position x, y,
+//!    velocity x, y, mass, inverse mass, restitution, friction, gravity
+//!    scale, bullet, awake, frozen (bytes), sleep time, island key (u32).
+//! 3. `contacts`: count (u32), then per cached contact in `(a, b)` order:
+//!    a, b (u32), normal impulse, tangent impulse, touching (byte).
+//! 4. `sleep`: island count (u32), then per island in key order: key,
+//!    member count, members (u32 each).
+//! 5. `allocator`: free-list length (u32), then its entries in order (u32).
+//!
+//! [`World::state_hash`] is FNV-1a-64 over the five part digests (u64 LE
+//! each, in the order above).
+
+use crate::dynamics::BodyKind;
+use crate::geometry::Shape;
+use crate::math::{Scalar, Vec2};
+use crate::world::World;
+
+const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;
+
+/// An FNV-1a-64 hasher fed with canonical little-endian values.
+#[derive(Clone, Copy, Debug)]
+pub struct StateHasher(u64);
+
+impl Default for StateHasher {
+    fn default() -> Self {
+        StateHasher(FNV_OFFSET)
+    }
+}
+
+impl StateHasher {
+    /// Feeds raw bytes.
+    pub fn bytes(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(FNV_PRIME);
+        }
+    }
+    /// Feeds one byte.
+    pub fn u8(&mut self, v: u8) {
+        self.bytes(&[v]);
+    }
+    /// Feeds a boolean as 0 or 1.
+    pub fn bool(&mut self, v: bool) {
+        self.u8(u8::from(v));
+    }
+    /// Feeds a `u32`, little endian.
+    pub fn u32(&mut self, v: u32) {
+        self.bytes(&v.to_le_bytes());
+    }
+    /// Feeds a `u64`, little endian.
+    pub fn u64(&mut self, v: u64) {
+        self.bytes(&v.to_le_bytes());
+    }
+    /// Feeds a scalar's canonical bits.
+    pub fn scalar<S: Scalar>(&mut self, v: S) {
+        self.u64(v.to_hash_bits());
+    }
+    /// Feeds a vector (x then y).
+    pub fn vec2<S: Scalar>(&mut self, v: Vec2<S>) {
+        self.scalar(v.x);
+        self.scalar(v.y);
+    }
+    /// The digest so far.
+    #[must_use]
+    pub fn finish(&self) -> u64 {
+        self.0
+    }
+}
+
+/// The per-part digests of a world's state (see the module docs).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StateDigest {
+    /// Tick, scalar and settings.
+    pub world: u64,
+    /// Every body slot.
+    pub bodies: u64,
+    /// The contact cache (warm-start impulses, touching flags).
+    pub contacts: u64,
+    /// Sleeping islands.
+    pub sleep: u64,
+    /// The id allocator's free list.
+    pub allocator: u64,
+}
+
+impl StateDigest {
+    /// The single 64-bit state hash combining all parts.
+    #[must_use]
+    pub fn combined(&self) -> u64 {
+        let mut h = StateHasher::default();
+        for part in [self.world, self.bodies, self.contacts, self.sleep, self.allocator] {
+            h.u64(part);
+        }
+        h.finish()
+    }
+
+    /// Names of the parts that differ between two digests.
+    #[must_use]
+    pub fn differing_parts(&self, other: &StateDigest) -> Vec<&'static str> {
+        let pairs = [
+            ("world", self.world, other.world),
+            ("bodies", self.bodies, other.bodies),
+            ("contacts", self.contacts, other.contacts),
+            ("sleep", self.sleep, other.sleep),
+            ("allocator", self.allocator, other.allocator),
+        ];
+        pairs
+            .iter()
+            .filter(|(_, a, b)| a != b)
+            .map(|(name, _, _)| *name)
+            .collect()
+    }
+}
+
+fn len_u32(n: usize) -> u32 {
+    u32::try_from(n).unwrap_or(u32::MAX)
+}
+
+impl<S: Scalar> World<S> {
+    /// The state hash (see [`crate::hash`] for the exact algorithm): equal
+    /// hashes on two peers mean equal states, on any machine.
+    ///
+    /// ```
+    /// use clockwork2d::prelude::*;
+    /// let mut a: World = World::new(WorldSettings::default());
+    /// let mut b: World = World::new(WorldSettings::default());
+    /// for w in [&mut a, &mut b] {
+    ///     w.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
+    ///     w.step();
+    /// }
+    /// assert_eq!(a.state_hash(), b.state_hash());
+    /// ```
+    #[must_use]
+    pub fn state_hash(&self) -> u64 {
+        self.state_digest().combined()
+    }
+
+    /// The per-part digests of the state.
+    #[must_use]
+    pub fn state_digest(&self) -> StateDigest {
+        StateDigest {
+            world: self.digest_world(),
+            bodies: self.digest_bodies(),
+            contacts: self.digest_contacts(),
+            sleep: self.digest_sleep(),
+            allocator: self.digest_allocator(),
+        }
+    }
+
+    fn digest_world(&self) -> u64 {
+        let s = &self.settings;
+        let mut h = StateHasher::default();
+        h.u8(S::ID);
+        h.u64(self.tick);
+        h.vec2(s.gravity);
+        h.scalar(s.dt);
+        h.u32(s.velocity_iterations);
+        h.u32(s.position_iterations);
+        h.u32(s.substeps);
+        h.bool(s.sleep_enabled);
+        for v in [
+            s.sleep_linear_threshold,
+            s.time_to_sleep,
+            s.restitution_threshold,
+            s.linear_slop,
+            s.position_correction,
+            s.max_correction,
+            s.speculative_margin,
+            s.max_speed,
+        ] {
+            h.scalar(v);
+        }
+        h.vec2(s.bounds.center);
+        h.vec2(s.bounds.half_extents);
+        h.finish()
+    }
+
+    fn digest_bodies(&self) -> u64 {
+        let mut h = StateHasher::default();
+        h.u32(len_u32(self.slots.len()));
+        for slot in &self.slots {
+            h.u32(slot.generation);
+            h.bool(slot.body.is_some());
+            let Some(b) = &slot.body else { continue };
+            h.u8(match b.kind {
+                BodyKind::Fixed => 0,
+                BodyKind::Kinematic => 1,
+                BodyKind::Dynamic => 2,
+            });
+            match b.shape {
+                Shape::Circle { radius } => {
+                    h.u8(0);
+                    h.scalar(radius);
+                }
+                Shape::Aabb { half_extents } => {
+                    h.u8(1);
+                    h.vec2(half_extents);
+                }
+            }
+            h.vec2(b.position);
+            h.vec2(b.velocity);
+            for v in [b.mass, b.inverse_mass, b.restitution, b.friction, b.gravity_scale] {
+                h.scalar(v);
+            }
+            h.bool(b.bullet);
+            h.bool(b.awake);
+            h.bool(b.frozen);
+            h.scalar(b.sleep_time);
+            h.u32(b.island);
+        }
+        h.finish()
+    }
+
+    fn digest_contacts(&self) -> u64 {
+        let mut h = StateHasher::default();
+        h.u32(len_u32(self.contacts.len()));
+        for c in &self.contacts {
+            h.u32(c.a);
+            h.u32(c.b);
+            h.scalar(c.normal_impulse);
+            h.scalar(c.tangent_impulse);
+            h.bool(c.touching);
+        }
+        h.finish()
+    }
+
+    fn digest_sleep(&self) -> u64 {
+        let mut h = StateHasher::default();
+        h.u32(len_u32(self.sleeping_islands.len()));
+        for (key, members) in &self.sleeping_islands {
+            h.u32(*key);
+            h.u32(len_u32(members.len()));
+            for m in members {
+                h.u32(*m);
+            }
+        }
+        h.finish()
+    }
+
+    fn digest_allocator(&self) -> u64 {
+        let mut h = StateHasher::default();
+        h.u32(len_u32(self.free_list.len()));
+        for i in &self.free_list {
+            h.u32(*i);
+        }
+        h.finish()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fnv1a_matches_the_published_test_vectors() {
+        // FNV-1a 64 of "" and of "a" (from the FNV reference test suite).
+        let empty = StateHasher::default();
+        assert_eq!(empty.finish(), 0xcbf2_9ce4_8422_2325);
+        let mut a = StateHasher::default();
+        a.bytes(b"a");
+        assert_eq!(a.finish(), 0xaf63_dc4c_8601_ec8c);
+    }
+
+    #[test]
+    fn values_are_fed_little_endian() {
+        let mut x = StateHasher::default();
+        x.u32(0x0403_0201);
+        let mut y = StateHasher::default();
+        y.bytes(&[1, 2, 3, 4]);
+        assert_eq!(x.finish(), y.finish());
+    }
+}

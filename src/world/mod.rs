@@ -1,0 +1,216 @@
+//! The [`World`]: bodies, the step pipeline, commands, events and queries.
+
+mod bodies;
+mod command;
+mod commands_apply;
+mod error;
+mod events;
+mod queries;
+mod settings;
+mod step;
+
+use std::collections::BTreeMap;
+
+use serde::{Deserialize, Serialize};
+
+pub use command::{Command, CommandOutcome};
+pub use error::WorldError;
+pub use events::Event;
+pub use queries::{BodyRayHit, QueryFilter};
+pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
+
+use crate::Fx;
+use crate::collision::{CachedContact, StepScratch};
+use crate::dynamics::{Body, BodyId};
+use crate::math::Scalar;
+
+/// One slot of the body table: a generation counter and maybe a body.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(bound = "")]
+pub(crate) struct Slot<S: Scalar> {
+    pub(crate) generation: u32,
+    pub(crate) body: Option<Body<S>>,
+}
+
+/// A deterministic 2D physics world.
+///
+/// ```
+/// use clockwork2d::prelude::*;
+/// let mut world: World = World::new(WorldSettings::default());
+/// let _ground = world
+///     .add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(20.0), fx(0.5))))
+///         .position(Vec2::new(fx(0.0), fx(-0.5))))
+///     .unwrap();
+/// let ball = world
+///     .add_body(BodyDef::dynamic(Shape::circle(fx(0.25)))
+///         .position(Vec2::new(fx(0.0), fx(4.0))))
+///     .unwrap();
+/// for _ in 0..240 {
+///     world.step();
+/// }
+/// let p = world.body(ball).unwrap().position();
+/// assert!((p.y.to_f64() - 0.25).abs() < 0.01); // resting on the ground
+/// ```
+#[derive(Clone, Debug)]
+pub struct World<S: Scalar = Fx> {
+    pub(crate) settings: WorldSettings<S>,
+    pub(crate) tick: u64,
+    pub(crate) slots: Vec<Slot<S>>,
+    /// Freed slot indices; the last one is reused first.
+    pub(crate) free_list: Vec<u32>,
+    /// Contacts of the last substep, sorted by slot pair, with their
+    /// accumulated impulses (for warm starting) and touching state.
+    pub(crate) contacts: Vec<CachedContact<S>>,
+    /// Sleeping islands: key (smallest slot index of the island when it fell
+    /// asleep) → member slot indices, ascending.
+    pub(crate) sleeping_islands: BTreeMap<u32, Vec<u32>>,
+    /// Events of the last step.
+    pub(crate) events: Vec<Event>,
+    /// Working buffers reused every step (no allocation in steady state);
+    /// derived data, not part of the state.
+    pub(crate) scratch: StepScratch<S>,
+}
+
+impl<S: Scalar> World<S> {
+    /// Creates an empty world. Settings outside their documented ranges are
+    /// replaced by the defaults field by field (use [`World::try_new`] to be
+    /// told instead).
+    #[must_use]
+    pub fn new(settings: WorldSettings<S>) -> Self {
+        let settings = if settings.validate().is_ok() {
+            settings
+        } else {
+            Self::repair_settings(settings)
+        };
+        Self::with_valid_settings(settings)
+    }
+
+    /// Creates an empty world, refusing settings outside their ranges.
+    ///
+    /// # Errors
+    /// [`WorldError::InvalidSettings`] naming the first bad field.
+    pub fn try_new(settings: WorldSettings<S>) -> Result<Self, WorldError> {
+        settings.validate()?;
+        Ok(Self::with_valid_settings(settings))
+    }
+
+    fn with_valid_settings(settings: WorldSettings<S>) -> Self {
+        World {
+            settings,
+            tick: 0,
+            slots: Vec::new(),
+            free_list: Vec::new(),
+            contacts: Vec::new(),
+            sleeping_islands: BTreeMap::new(),
+            events: Vec::new(),
+            scratch: StepScratch::default(),
+        }
+    }
+
+    /// Replaces each invalid field by its default (one field at a time, so
+    /// valid choices survive).
+    fn repair_settings(mut settings: WorldSettings<S>) -> WorldSettings<S> {
+        let defaults = WorldSettings::<S>::default();
+        while let Err(WorldError::InvalidSettings { field, .. }) = settings.validate() {
+            match field {
+                "gravity" => settings.gravity = defaults.gravity,
+                "dt" => settings.dt = defaults.dt,
+                "velocity_iterations" => {
+                    settings.velocity_iterations = defaults.velocity_iterations;
+                }
+                "position_iterations" => {
+                    settings.position_iterations = defaults.position_iterations;
+                }
+                "substeps" => settings.substeps = defaults.substeps,
+                "sleep_linear_threshold" => {
+                    settings.sleep_linear_threshold = defaults.sleep_linear_threshold;
+                }
+                "time_to_sleep" => settings.time_to_sleep = defaults.time_to_sleep,
+                "restitution_threshold" => {
+                    settings.restitution_threshold = defaults.restitution_threshold;
+                }
+                "linear_slop" => settings.linear_slop = defaults.linear_slop,
+                "max_correction" => settings.max_correction = defaults.max_correction,
+                "speculative_margin" => {
+                    settings.speculative_margin = defaults.speculative_margin;
+                }
+                "position_correction" => {
+                    settings.position_correction = defaults.position_correction;
+                }
+                "max_speed" => settings.max_speed = defaults.max_speed,
+                _ => settings.bounds = defaults.bounds,
+            }
+        }
+        settings
+    }
+
+    /// The world's settings.
+    #[must_use]
+    pub fn settings(&self) -> &WorldSettings<S> {
+        &self.settings
+    }
+
+    /// Ticks stepped so far.
+    #[must_use]
+    pub fn tick(&self) -> u64 {
+        self.tick
+    }
+
+    /// The body with this id, or `None` if the id is stale or unknown.
+    #[must_use]
+    pub fn body(&self, id: BodyId) -> Option<&Body<S>> {
+        let slot = self.slots.get(usize::try_from(id.index()).ok()?)?;
+        if slot.generation != id.generation() {
+            return None;
+        }
+        slot.body.as_ref()
+    }
+
+    /// All live bodies in id (slot) order.
+    pub fn bodies(&self) -> impl Iterator<Item = (BodyId, &Body<S>)> {
+        self.slots.iter().zip(0u32..).filter_map(|(slot, index)| {
+            slot.body
+                .as_ref()
+                .map(|body| (BodyId::from_parts(index, slot.generation), body))
+        })
+    }
+
+    /// Number of live bodies.
+    #[must_use]
+    pub fn body_count(&self) -> usize {
+        self.slots.iter().filter(|s| s.body.is_some()).count()
+    }
+
+    /// The events of the last step (see [`Event`] for their order).
+    #[must_use]
+    pub fn events(&self) -> &[Event] {
+        &self.events
+    }
+
+    /// Pairs of bodies touching after the last step, sorted by id.
+    pub fn touching_pairs(&self) -> impl Iterator<Item = (BodyId, BodyId)> + '_ {
+        self.contacts
+            .iter()
+            .filter(|c| c.touching)
+            .map(|c| (self.id_of(c.a), self.id_of(c.b)))
+    }
+
+    /// The id of the live body in slot `index`.
+    #[inline]
+    pub(crate) fn id_of(&self, index: u32) -> BodyId {
+        let generation = self
+            .slots
+            .get(index as usize)
+            .map_or(0, |slot| slot.generation);
+        BodyId::from_parts(index, generation)
+    }
+
+    /// The slot index of a live body, or an error for a stale id.
+    pub(crate) fn live_index(&self, id: BodyId) -> Result<usize, WorldError> {
+        let index = usize::try_from(id.index()).map_err(|_| WorldError::UnknownBody(id))?;
+        match self.slots.get(index) {
+            Some(slot) if slot.generation == id.generation() && slot.body.is_some() => Ok(index),
+            _ => Err(WorldError::UnknownBody(id)),
+        }
+    }
+}

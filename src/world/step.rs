@@ -1,0 +1,444 @@
+//! The step pipeline (DESIGN.md, "Pipeline of one step").
+//!
+//! Per tick: commands → per substep [gravity → broad phase → narrow phase
+//! (waking what an awake body touches) → warm start → velocity iterations →
+//! bullets' time of impact → integrate → position iterations → bounds] →
+//! sleep → events.
+
+use super::{Command, CommandOutcome, Event, World, WorldError};
+use crate::collision::{CachedContact, Proxy, ProxyClass, find_pairs, contact_between, shape_toi};
+use crate::dynamics::contact_solver::{
+    ContactConstraint, solve_positions, solve_velocities, warm_start,
+};
+use crate::dynamics::{BodyId, BodyKind, NO_ISLAND, islands};
+use crate::geometry::Toi;
+use crate::math::{Scalar, Vec2};
+
+impl<S: Scalar> World<S> {
+    /// Advances the world by one tick (`settings.dt` seconds).
+    pub fn step(&mut self) {
+        self.step_with(&[]);
+    }
+
+    /// Applies `commands` in order, then advances one tick. Returns one
+    /// result per command; a refused command leaves the world unchanged and
+    /// does not stop the others.
+    pub fn step_with(
+        &mut self,
+        commands: &[Command<S>],
+    ) -> Vec<Result<CommandOutcome, WorldError>> {
+        self.events.clear();
+        let results = commands.iter().map(|c| self.apply(c.clone())).collect();
+        let previous_touching: Vec<(u32, u32)> = self
+            .contacts
+            .iter()
+            .filter(|c| c.touching)
+            .map(|c| (c.a, c.b))
+            .collect();
+        let substeps = S::from_int(i32::try_from(self.settings.substeps).unwrap_or(1));
+        // dt ∈ (0, 1] and substeps ∈ [1, 64] (validated), so both are exact
+        // divisions by non-zero values.
+        let h = self.settings.dt.div(substeps);
+        let inverse_h = substeps.div(self.settings.dt);
+        for _ in 0..self.settings.substeps {
+            self.substep(h, inverse_h);
+        }
+        self.update_sleep();
+        self.push_contact_events(&previous_touching);
+        self.events.sort_unstable();
+        self.events.dedup();
+        self.tick = self.tick.wrapping_add(1);
+        results
+    }
+
+    fn substep(&mut self, h: S, inverse_h: S) {
+        // Narrow phase may wake sleeping islands; their own contacts were not
+        // paired (both asleep at broad-phase time), so the phase is redone.
+        // Each pass wakes at least one island, so this ends.
+        loop {
+            self.load_scratch(h);
+            self.build_proxies(h);
+            find_pairs(&mut self.scratch.proxies, &mut self.scratch.pairs);
+            let to_wake = self.build_constraints(h, inverse_h);
+            if to_wake.is_empty() {
+                break;
+            }
+            for index in to_wake {
+                self.wake_index(index);
+            }
+        }
+        let scratch = &mut self.scratch;
+        warm_start(&scratch.constraints, &mut scratch.velocities);
+        for _ in 0..self.settings.velocity_iterations {
+            solve_velocities(&mut scratch.constraints, &mut scratch.velocities);
+        }
+        self.integrate(h);
+        let settings = &self.settings;
+        let scratch = &mut self.scratch;
+        for _ in 0..settings.position_iterations {
+            solve_positions(
+                &scratch.constraints,
+                &mut scratch.displacements,
+                settings.linear_slop,
+                settings.position_correction,
+                settings.max_correction,
+            );
+        }
+        self.write_back();
+        self.update_contact_cache();
+    }
+
+    /// Velocities (with gravity) and solver inverse masses for every slot.
+    fn load_scratch(&mut self, h: S) {
+        let n = self.slots.len();
+        let scratch = &mut self.scratch;
+        scratch.velocities.clear();
+        scratch.velocities.resize(n, Vec2::ZERO);
+        scratch.inverse_masses.clear();
+        scratch.inverse_masses.resize(n, S::ZERO);
+        scratch.displacements.clear();
+        scratch.displacements.resize(n, Vec2::ZERO);
+        let gravity_step = self.settings.gravity.scale(h);
+        let max = self.settings.max_speed;
+        let limit = Vec2::new(max, max);
+        for (i, slot) in self.slots.iter().enumerate() {
+            let Some(body) = &slot.body else { continue };
+            if body.is_simulated_dynamic() {
+                let v = body.velocity + gravity_step.scale(body.gravity_scale);
+                scratch.velocities[i] = v.clamp(-limit, limit);
+                scratch.inverse_masses[i] = body.inverse_mass;
+            } else if body.is_moving() {
+                scratch.velocities[i] = body.velocity;
+            }
+        }
+    }
+
+    /// Swept bounding boxes: the box now ∪ the box after moving `v·h`,
+    /// grown by the speculative margin for bodies that move.
+    fn build_proxies(&mut self, h: S) {
+        let margin = self.settings.speculative_margin;
+        let scratch = &mut self.scratch;
+        scratch.proxies.clear();
+        for (i, slot) in self.slots.iter().enumerate() {
+            let Some(body) = &slot.body else { continue };
+            if body.frozen {
+                continue;
+            }
+            let velocity = scratch.velocities[i];
+            let class = match body.kind {
+                BodyKind::Dynamic if body.awake => ProxyClass::Dynamic,
+                BodyKind::Dynamic => ProxyClass::Sleeping,
+                BodyKind::Kinematic if velocity != Vec2::ZERO => ProxyClass::MovingKinematic,
+                _ => ProxyClass::Still,
+            };
+            let now = body.aabb();
+            let swept = if matches!(class, ProxyClass::Dynamic | ProxyClass::MovingKinematic) {
+                let later = body.shape.bounding_aabb_at(body.position + velocity.scale(h));
+                now.union(&later).expanded(margin)
+            } else {
+                now
+            };
+            let (lo, hi) = (swept.min(), swept.max());
+            scratch.proxies.push(Proxy {
+                min_x: lo.x,
+                max_x: hi.x,
+                min_y: lo.y,
+                max_y: hi.y,
+                index: u32::try_from(i).unwrap_or(u32::MAX),
+                class: Some(class),
+            });
+        }
+    }
+
+    /// Narrow phase over the sorted pairs, warm-started from the cache by a
+    /// merge join (both lists are sorted by pair). Returns the sleeping
+    /// bodies an awake body touches (to be woken); when it is not empty the
+    /// constraints are incomplete and the caller redoes the phase.
+    fn build_constraints(&mut self, h: S, inverse_h: S) -> Vec<u32> {
+        let settings = &self.settings;
+        let scratch = &mut self.scratch;
+        scratch.constraints.clear();
+        let mut to_wake = Vec::new();
+        let mut cache = self.contacts.iter().peekable();
+        for &(a, b) in &scratch.pairs {
+            let (Some(body_a), Some(body_b)) = (
+                self.slots[a as usize].body.as_ref(),
+                self.slots[b as usize].body.as_ref(),
+            ) else {
+                continue;
+            };
+            let contact = contact_between(&body_a.shape, body_a.position, &body_b.shape, body_b.position);
+            let (va, vb) = (scratch.velocities[a as usize], scratch.velocities[b as usize]);
+            let vn = (vb - va).dot(contact.normal);
+            // Keep the contact if the gap can close within this substep
+            // (plus the margin): s ≤ margin + max(0, -v_n)·h.
+            let reach = settings.speculative_margin.add(vn.neg().max(S::ZERO).mul(h));
+            if contact.separation > reach {
+                continue;
+            }
+            let asleep_a = body_a.kind == BodyKind::Dynamic && !body_a.awake;
+            let asleep_b = body_b.kind == BodyKind::Dynamic && !body_b.awake;
+            if asleep_a {
+                to_wake.push(a);
+            }
+            if asleep_b {
+                to_wake.push(b);
+            }
+            if !to_wake.is_empty() {
+                continue;
+            }
+            let (wa, wb) = (scratch.inverse_masses[a as usize], scratch.inverse_masses[b as usize]);
+            let sum = wa.add(wb);
+            if !sum.is_positive() {
+                continue;
+            }
+            // Skip cache entries of pairs that are gone, pick this pair's.
+            while cache.peek().is_some_and(|c| (c.a, c.b) < (a, b)) {
+                cache.next();
+            }
+            let (normal_impulse, tangent_impulse) = match cache.peek() {
+                Some(c) if (c.a, c.b) == (a, b) => (c.normal_impulse, c.tangent_impulse),
+                _ => (S::ZERO, S::ZERO),
+            };
+            // Geometric mean of the frictions (exact, and sqrt-free, when
+            // they are equal, which is the common case).
+            let friction = if body_a.friction == body_b.friction {
+                body_a.friction
+            } else {
+                body_a.friction.mul(body_b.friction).sqrt()
+            };
+            let restitution = body_a.restitution.max(body_b.restitution);
+            let mut constraint = ContactConstraint {
+                a,
+                b,
+                normal: contact.normal,
+                separation: contact.separation,
+                inverse_mass_a: wa,
+                inverse_mass_b: wb,
+                effective_mass: S::ONE.div(sum),
+                friction,
+                target_velocity: S::ZERO,
+                normal_impulse,
+                tangent_impulse,
+            };
+            constraint.prepare_target(vn, restitution, settings.restitution_threshold, h, inverse_h);
+            scratch.constraints.push(constraint);
+        }
+        to_wake.sort_unstable();
+        to_wake.dedup();
+        to_wake
+    }
+
+    /// Displacements `v·h`; a bullet's is cut at its earliest time of impact
+    /// against anything it was paired with, so it cannot pass through.
+    fn integrate(&mut self, h: S) {
+        let scratch = &mut self.scratch;
+        for (i, slot) in self.slots.iter().enumerate() {
+            let Some(body) = &slot.body else { continue };
+            if body.is_moving() {
+                scratch.displacements[i] = scratch.velocities[i].scale(h);
+            }
+        }
+        for &(a, b) in &scratch.pairs {
+            for (bullet, other) in [(a, b), (b, a)] {
+                let (Some(bb), Some(ob)) = (
+                    self.slots[bullet as usize].body.as_ref(),
+                    self.slots[other as usize].body.as_ref(),
+                ) else {
+                    continue;
+                };
+                if !bb.bullet || !bb.is_simulated_dynamic() {
+                    continue;
+                }
+                let full = scratch.velocities[bullet as usize].scale(h);
+                let other_motion = scratch.displacements[other as usize];
+                if let Toi::Hit { t, .. } =
+                    shape_toi(&bb.shape, bb.position, full, &ob.shape, ob.position, other_motion)
+                {
+                    let cut = full.scale(t);
+                    // Keep the shortest cut over all partners.
+                    let current = scratch.displacements[bullet as usize];
+                    if cut.length_squared_wide() < current.length_squared_wide() {
+                        scratch.displacements[bullet as usize] = cut;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Positions and velocities back into the bodies; bodies whose centre
+    /// left the bounds are frozen.
+    fn write_back(&mut self) {
+        let bounds = self.settings.bounds;
+        let (lo, hi) = (bounds.min(), bounds.max());
+        for (i, slot) in self.slots.iter_mut().enumerate() {
+            let Some(body) = slot.body.as_mut() else { continue };
+            if !body.is_moving() {
+                continue;
+            }
+            body.position += self.scratch.displacements[i];
+            if body.kind == BodyKind::Dynamic {
+                body.velocity = self.scratch.velocities[i];
+            }
+            if !bounds.contains_point(body.position) {
+                body.position = body.position.clamp(lo, hi);
+                body.velocity = Vec2::ZERO;
+                body.frozen = true;
+                let id = BodyId::from_parts(u32::try_from(i).unwrap_or(u32::MAX), slot.generation);
+                self.events.push(Event::Frozen(id));
+            }
+        }
+    }
+
+    /// The new cache: this substep's contacts, plus the remembered contacts
+    /// of pairs that were not simulated (both asleep or still), so a sleeping
+    /// stack keeps its warm-start impulses and does not report its contacts
+    /// as ended.
+    fn update_contact_cache(&mut self) {
+        let slop = self.settings.linear_slop;
+        let scratch = &self.scratch;
+        let active = |index: u32| {
+            self.slots[index as usize]
+                .body
+                .as_ref()
+                .is_some_and(|b| b.is_moving())
+        };
+        let kept: Vec<CachedContact<S>> = self
+            .contacts
+            .iter()
+            .filter(|c| !active(c.a) && !active(c.b))
+            .copied()
+            .collect();
+        let mut fresh = Vec::with_capacity(scratch.constraints.len() + kept.len());
+        let mut kept_iter = kept.into_iter().peekable();
+        for c in &scratch.constraints {
+            while kept_iter.peek().is_some_and(|k| (k.a, k.b) < (c.a, c.b)) {
+                fresh.extend(kept_iter.next());
+            }
+            let motion = scratch.displacements[c.b as usize] - scratch.displacements[c.a as usize];
+            let separation = c.separation.add(motion.dot(c.normal));
+            fresh.push(CachedContact {
+                a: c.a,
+                b: c.b,
+                normal_impulse: c.normal_impulse,
+                tangent_impulse: c.tangent_impulse,
+                touching: separation <= slop,
+            });
+        }
+        fresh.extend(kept_iter);
+        self.contacts = fresh;
+    }
+
+    /// Sleep timers, islands, and putting resting islands to sleep.
+    fn update_sleep(&mut self) {
+        let settings = &self.settings;
+        if !settings.sleep_enabled {
+            return;
+        }
+        let threshold_sq = settings.sleep_linear_threshold.wide_mul(settings.sleep_linear_threshold);
+        for slot in &mut self.slots {
+            let Some(body) = slot.body.as_mut() else { continue };
+            if !body.is_simulated_dynamic() {
+                continue;
+            }
+            if body.velocity.length_squared_wide() <= threshold_sq {
+                body.sleep_time = body.sleep_time.add(settings.dt);
+            } else {
+                body.sleep_time = S::ZERO;
+            }
+        }
+        let n = self.slots.len();
+        let parents = &mut self.scratch.parents;
+        islands::reset(parents, n);
+        for c in &self.contacts {
+            if !(c.touching || c.normal_impulse.is_positive()) {
+                continue;
+            }
+            let (Some(ba), Some(bb)) = (
+                self.slots[c.a as usize].body.as_ref(),
+                self.slots[c.b as usize].body.as_ref(),
+            ) else {
+                continue;
+            };
+            let (da, db) = (ba.is_simulated_dynamic(), bb.is_simulated_dynamic());
+            if da && db {
+                islands::union(parents, c.a, c.b);
+            }
+        }
+        // A body touched by a moving kinematic body may not sleep.
+        for c in &self.contacts {
+            for (me, other) in [(c.a, c.b), (c.b, c.a)] {
+                let moving_kinematic = self.slots[other as usize]
+                    .body
+                    .as_ref()
+                    .is_some_and(|o| o.kind == BodyKind::Kinematic && o.velocity != Vec2::ZERO);
+                if moving_kinematic
+                    && let Some(body) = self.slots[me as usize].body.as_mut()
+                {
+                    body.sleep_time = S::ZERO;
+                }
+            }
+        }
+        // The island's readiness is its least-rested member.
+        let mut island_time: Vec<S> = vec![S::MAX; n];
+        for i in 0..n {
+            let Some(body) = self.slots[i].body.as_ref() else { continue };
+            if !body.is_simulated_dynamic() {
+                continue;
+            }
+            let root = islands::find(parents, u32::try_from(i).unwrap_or(u32::MAX)) as usize;
+            island_time[root] = island_time[root].min(body.sleep_time);
+        }
+        for i in 0..n {
+            let Some(body) = self.slots[i].body.as_mut() else { continue };
+            if !body.is_simulated_dynamic() {
+                continue;
+            }
+            let index = u32::try_from(i).unwrap_or(u32::MAX);
+            let root = islands::find(parents, index);
+            if island_time[root as usize] < settings.time_to_sleep {
+                continue;
+            }
+            body.awake = false;
+            body.velocity = Vec2::ZERO;
+            body.island = root;
+            self.sleeping_islands.entry(root).or_default().push(index);
+            self.events
+                .push(Event::Slept(BodyId::from_parts(index, self.slots[i].generation)));
+        }
+        let _ = NO_ISLAND;
+    }
+
+    /// Contact begin/end events by comparing the touching pairs before and
+    /// after the tick (both sorted).
+    fn push_contact_events(&mut self, before: &[(u32, u32)]) {
+        let after: Vec<(u32, u32)> = self
+            .contacts
+            .iter()
+            .filter(|c| c.touching)
+            .map(|c| (c.a, c.b))
+            .collect();
+        let (mut i, mut j) = (0, 0);
+        while i < before.len() || j < after.len() {
+            match (before.get(i), after.get(j)) {
+                (Some(&x), Some(&y)) if x == y => {
+                    i += 1;
+                    j += 1;
+                }
+                (Some(&x), Some(&y)) if x < y => {
+                    self.events.push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
+                    i += 1;
+                }
+                (Some(&x), None) => {
+                    self.events.push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
+                    i += 1;
+                }
+                (_, Some(&y)) => {
+                    self.events.push(Event::ContactBegan(self.id_of(y.0), self.id_of(y.1)));
+                    j += 1;
+                }
+                (None, None) => break,
+            }
+        }
+    }
+}
