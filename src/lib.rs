@@ -20,6 +20,7 @@ pub mod dynamics;
 pub mod geometry;
 pub mod hash;
 pub mod math;
+pub mod scene;
 pub mod world;
 
 pub use dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};

@@ -15,7 +15,7 @@
 //!
 //! Every property runs for both fixed types, `I32F32` (= `Fx`) and
 //! `I48F16`, on the same raw `i64` bits (both types store an `i64`).
-//! Case counts: [`CASES`] (4096) per property, 16× proptest's default of 256;
+//! Case counts: [`CASES`] (8192) per property, 32× proptest's default of 256;
 //! each property is a few integer operations, so this is cheap even in debug.
 
 use clockwork2d::math::WideFloat;
@@ -24,7 +24,7 @@ use fixed::types::{I32F32, I48F16, I64F64, I96F32};
 use proptest::prelude::*;
 
 /// Cases per property (proptest's default is 256).
-const CASES: u32 = 4096;
+const CASES: u32 = 8192;
 
 // ---------------------------------------------------------------------------
 // Raw-bit access for the reference computations.
@@ -309,7 +309,12 @@ fn check_wide<S: Fixed>(a: i64, b: i64) {
         S::NAME
     );
     // Narrowing the exact product is the saturating floor of it, i.e. mul.
-    assert_eq!(x.wide_mul(y).narrow(), x.mul(y), "{} narrow(wide_mul)", S::NAME);
+    assert_eq!(
+        x.wide_mul(y).narrow(),
+        x.mul(y),
+        "{} narrow(wide_mul)",
+        S::NAME
+    );
 }
 
 fn check_wide_ops<S: Fixed>(u: i128, v: i128) {
@@ -322,7 +327,12 @@ fn check_wide_ops<S: Fixed>(u: i128, v: i128) {
     assert_eq!(p.is_negative(), u < 0);
     // narrow: drop the extra fraction bits rounding toward −∞, saturate.
     let narrowed = p.narrow().raw();
-    assert_eq!(narrowed, sat(u >> narrow_shift::<S>()), "{} narrow", S::NAME);
+    assert_eq!(
+        narrowed,
+        sat(u >> narrow_shift::<S>()),
+        "{} narrow",
+        S::NAME
+    );
 }
 
 fn check_sqrt_narrow<S: Fixed>(u: i128) {
@@ -339,7 +349,11 @@ fn check_sqrt_narrow<S: Fixed>(u: i128) {
     assert_eq!(r, root.min(RAW_MAX), "{} sqrt_narrow({u})", S::NAME);
     // Within one narrow ulp: r² ≤ u < (r + 1)² whenever not saturated.
     if root <= RAW_MAX {
-        assert!(r * r <= u && u < (r + 1) * (r + 1), "{} sqrt_narrow", S::NAME);
+        assert!(
+            r * r <= u && u < (r + 1) * (r + 1),
+            "{} sqrt_narrow",
+            S::NAME
+        );
     }
     // A nonzero radicand always has a nonzero root (1 ulp² ↦ 1 ulp).
     assert!(r >= 1);
@@ -501,7 +515,12 @@ fn check_float_reference<S: Scalar + Into<f64>>(x: S) {
     assert_eq!(by_zero, expected, "{} div by zero", S::NAME);
     assert_eq!(x.div(S::ZERO.neg()), expected, "{} div by −0", S::NAME);
     assert_eq!(x.checked_div(S::ZERO), None, "{} checked_div(0)", S::NAME);
-    assert_eq!(x.checked_div(S::ZERO.neg()), None, "{} checked_div(−0)", S::NAME);
+    assert_eq!(
+        x.checked_div(S::ZERO.neg()),
+        None,
+        "{} checked_div(−0)",
+        S::NAME
+    );
     let r: f64 = x.sqrt().into();
     if v <= 0.0 {
         assert_eq!(r.to_bits(), 0, "{} sqrt of non-positive is +0", S::NAME);
@@ -537,7 +556,10 @@ fn float_reference_special_values() {
     assert_eq!(negative.sqrt_narrow(), 0.0);
     assert_eq!(<f64 as Scalar>::half(3.0), 1.5);
     assert_eq!(<f32 as Scalar>::mul_int(1.5, -4), -6.0);
-    assert_eq!((f64::ID, f32::ID, f64::NAME, f32::NAME), (100, 101, "f64", "f32"));
+    assert_eq!(
+        (f64::ID, f32::ID, f64::NAME, f32::NAME),
+        (100, 101, "f64", "f32")
+    );
 }
 
 // ---------------------------------------------------------------------------
@@ -553,7 +575,10 @@ fn constants_are_the_raw_extremes() {
     assert_eq!(<I48F16 as Scalar>::ONE.to_bits(), 1 << 16);
     assert_eq!(<I48F16 as Scalar>::EPSILON.to_bits(), 1);
     assert_eq!((<Fx as Scalar>::NAME, <Fx as Scalar>::ID), ("I32F32", 1));
-    assert_eq!((<I48F16 as Scalar>::NAME, <I48F16 as Scalar>::ID), ("I48F16", 2));
+    assert_eq!(
+        (<I48F16 as Scalar>::NAME, <I48F16 as Scalar>::ID),
+        ("I48F16", 2)
+    );
     assert!(!<Fx as Scalar>::IS_REFERENCE && !<I48F16 as Scalar>::IS_REFERENCE);
 }
 
@@ -619,10 +644,7 @@ fn sqrt_narrow_by_hand() {
     let g = I48F16::from_bits((1 << 16) + 1);
     assert_eq!(g.wide_mul(g).sqrt_narrow(), g);
     // Above the narrow MAX but below 2^62: exact (2^40 ↦ 2^20).
-    assert_eq!(
-        I64F64::from_num(1u64 << 40).sqrt_narrow(),
-        fx(1_048_576.0)
-    );
+    assert_eq!(I64F64::from_num(1u64 << 40).sqrt_narrow(), fx(1_048_576.0));
     // Just below 2^62: floor(√(2^62 − 2^-64)) = MAX (2^31 − 2^-32).
     assert_eq!(wide((1 << 126) - 1).sqrt_narrow(), Fx::MAX);
     // From 2^62 on, the root is ≥ 2^31 and saturates to MAX.
@@ -674,5 +696,8 @@ fn from_ratio_by_hand() {
     assert_eq!(Fx::from_ratio(0, 0), Fx::ZERO);
     assert_eq!(Fx::from_ratio(i32::MIN, -1), Fx::MAX);
     assert_eq!(Fx::from_ratio(i32::MIN, 1), Fx::MIN);
-    assert_eq!(I48F16::from_ratio(i32::MIN, -1), I48F16::from_num(1u64 << 31));
+    assert_eq!(
+        I48F16::from_ratio(i32::MIN, -1),
+        I48F16::from_num(1u64 << 31)
+    );
 }

@@ -45,10 +45,11 @@
 //!   passes: `a + d·t_hi` is exact in the wide type and the correction term is
 //!   below `|d|·ulp` in magnitude, so it is formed in the narrow type to within
 //!   one ulp. Each component is therefore within **2 ulps** of the exact
-//!   closest point (≈ 4.7e-10), independent of the segment's length: one ulp
-//!   for the correction term's rounding, one for the final narrowing (both
-//!   round toward −∞), plus `|d|·2⁻⁶⁴` from the quotient bits that were not
-//!   computed (negligible). The result is then clamped to the segment's
+//!   closest point (≈ 4.7e-10), independent of the segment's length: below
+//!   one ulp for the correction term's rounding, below one for the final
+//!   narrowing (both round toward −∞), plus `|d|·2⁻⁶⁴` from the quotient bits
+//!   that were not computed (at most 2⁻¹⁵ ulp inside the bounds; strictly,
+//!   the bound is `2 ulp + |d|·2⁻⁶⁴`). The result is then clamped to the segment's
 //!   bounding box, which can only move it toward the exact point.
 //!
 //! For `I48F16` the same holds with its ulp (2⁻¹⁶) and 16-bit passes; for the

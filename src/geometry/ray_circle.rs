@@ -19,7 +19,7 @@
 //!
 //! # Accuracy (`Fx`, inputs within the world bounds)
 //!
-//! * The hit point is within about 8 ulps (`2e-9`) of the circle, at any
+//! * The hit point is within about 4 ulps (`1e-9`) of the circle, at any
 //!   distance and even for grazing rays.
 //! * The distance is as well conditioned as the geometry allows: a few ulps
 //!   for a head-on hit, growing like `3 r ulp / (2 √(r² − h²))` as the

@@ -90,8 +90,8 @@ pub trait Scalar:
     /// Converts an integer, saturating to the range.
     fn from_int(value: i32) -> Self;
     /// `numerator / denominator` computed exactly-then-rounded in the scalar
-    /// (no float on the way). A zero denominator gives the defined division
-    /// result (see module docs).
+    /// (no float on the way; truncated toward zero for fixed point). A zero
+    /// denominator gives the defined division result (see module docs).
     fn from_ratio(numerator: i32, denominator: i32) -> Self {
         Self::from_int(numerator).div(Self::from_int(denominator))
     }
@@ -103,9 +103,11 @@ pub trait Scalar:
     fn add(self, rhs: Self) -> Self;
     /// Saturating subtraction.
     fn sub(self, rhs: Self) -> Self;
-    /// Saturating multiplication.
+    /// Saturating multiplication. For fixed point the exact product is
+    /// rounded toward negative infinity.
     fn mul(self, rhs: Self) -> Self;
-    /// Saturating division with a defined result for a zero divisor.
+    /// Saturating division with a defined result for a zero divisor. For
+    /// fixed point the exact quotient is truncated toward zero.
     fn div(self, rhs: Self) -> Self;
     /// Division, or `None` for a zero divisor or an overflowing quotient.
     fn checked_div(self, rhs: Self) -> Option<Self>;

@@ -44,7 +44,7 @@ pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd {
 }
 
 macro_rules! impl_wide_fixed {
-    ($wide:ty, $narrow:ty) => {
+    ($wide:ty, $narrow:ty, $shift:literal) => {
         impl WideScalar for $wide {
             type Narrow = $narrow;
             const ZERO: Self = <$wide>::ZERO;
@@ -63,39 +63,43 @@ macro_rules! impl_wide_fixed {
             }
             #[inline]
             fn narrow(self) -> $narrow {
-                <$narrow>::saturating_from_num(self)
+                // Drop the extra fraction bits with an arithmetic shift
+                // (rounding toward negative infinity, like the `fixed`
+                // crate's conversions), then clamp to the narrow range.
+                let shifted = self.to_bits() >> $shift;
+                let clamped = shifted.clamp(i128::from(i64::MIN), i128::from(i64::MAX));
+                <$narrow>::from_bits(i64::try_from(clamped).unwrap_or(i64::MAX))
             }
             #[inline]
             fn sqrt_narrow(self) -> $narrow {
-                if self <= <$wide>::ZERO {
+                // The wide type has exactly twice the narrow type's fraction
+                // bits (64 vs 32, or 32 vs 16). With W the wide raw bits and
+                // f the narrow fraction bits, w = W / 2^(2f), so the narrow
+                // root's raw bits are
+                //   R = floor(sqrt(W / 2^(2f)) · 2^f) = floor(sqrt(W)) = isqrt(W):
+                // one exact integer square root, correctly rounded down
+                // (within one narrow ulp of the true root), no float.
+                let bits = self.to_bits();
+                if bits <= 0 {
                     return <$narrow>::ZERO;
                 }
-                // Fast path: when the value fits the narrow type and is at
-                // least 1, the narrow root is already exact to one ulp, and
-                // narrow roots are several times cheaper. Below 1 the narrow
-                // type would lose the low bits of tiny squared lengths
-                // (1 ulp² underflows to 0), so the wide root is used there.
-                if self >= <$wide>::ONE && self <= <$wide>::from_num(<$narrow>::MAX) {
-                    // Narrowing drops fraction bits (Δ < 1 ulp), which can
-                    // lower the root by up to Δ/(2√x) ≤ ½ ulp for x ≥ 1, so
-                    // the floored narrow root is floor(√x) or one ulp below
-                    // it (e.g. x = (1 + ulp)² gives 1). One exact correction
-                    // step restores floor(√x); (r + ulp)² is below the
-                    // narrow MAX plus 1, far inside the wide range.
-                    let root = self.narrow().sqrt();
-                    let up = root.saturating_add(<$narrow>::DELTA);
-                    return if up.wide_mul(up) <= self { up } else { root };
-                }
-                // The root of a positive wide value never overflows the wide
-                // type (sqrt(x) < x for x > 1, sqrt(x) < 1 for x < 1).
-                <$narrow>::saturating_from_num(self.sqrt())
+                let w = bits.unsigned_abs();
+                let root: u128 = match u64::try_from(w) {
+                    // Most squared lengths in a world fit 64 bits; the u64
+                    // root is several times cheaper than the u128 one.
+                    Ok(small) => u128::from(small.isqrt()),
+                    Err(_) => w.isqrt(),
+                };
+                // Saturate: only roots of values above the narrow range's
+                // square (2^62 for I32F32) can exceed it.
+                <$narrow>::from_bits(i64::try_from(root).unwrap_or(i64::MAX))
             }
         }
     };
 }
 
-impl_wide_fixed!(I64F64, fixed::types::I32F32);
-impl_wide_fixed!(I96F32, fixed::types::I48F16);
+impl_wide_fixed!(I64F64, fixed::types::I32F32, 32);
+impl_wide_fixed!(I96F32, fixed::types::I48F16, 16);
 
 /// The wide type of the float references is `f64` for both: `f32` products
 /// are exact in `f64`, and `f64` has no wider hardware type (it is a

@@ -178,11 +178,17 @@ impl<S: Scalar> World<S> {
             }
             let asleep_a = body_a.kind == BodyKind::Dynamic && !body_a.awake;
             let asleep_b = body_b.kind == BodyKind::Dynamic && !body_b.awake;
-            if asleep_a {
-                to_wake.push(a);
-            }
-            if asleep_b {
-                to_wake.push(b);
+            // Wake a sleeper only if the pair touches or will touch within
+            // this substep at the current approach speed: a resting awake
+            // body a hair away from a sleeping pile must not wake it.
+            let predicted = contact.separation.add(vn.min(S::ZERO).mul(h));
+            if (asleep_a || asleep_b) && predicted <= settings.linear_slop {
+                if asleep_a {
+                    to_wake.push(a);
+                }
+                if asleep_b {
+                    to_wake.push(b);
+                }
             }
             if !to_wake.is_empty() {
                 continue;
