@@ -26,10 +26,26 @@
 //! 4. `sleep`: island count (u32), then per island in key order: key,
 //!    member count, members (u32 each).
 //! 5. `allocator`: free-list length (u32), then its entries in order (u32).
+//! 6. `constraints`: constraint slot count (u32), then per slot: generation
+//!    (u32), present (byte), and if present: kind (0 bendy spring, 1 radial
+//!    spring, 2 rope), both anchors (tag 0 point + x, y; 1 body + index,
+//!    generation; 2 body offset + index, generation, x, y), the parameters
+//!    in declaration order, then the accumulated impulse; then the constraint
+//!    free list (length, entries).
 //!
-//! [`World::state_hash`] is FNV-1a-64 over the five part digests (u64 LE
+//! [`World::state_hash`] is FNV-1a-64 over the six part digests (u64 LE
 //! each, in the order above).
+//!
+//! # The 128-bit form
+//!
+//! [`World::state_hash128`] feeds **the same canonical byte stream** of each
+//! part into **FNV-1a, 128-bit** (offset basis
+//! `0x6c62272e07bb014262b821756295c58d`, prime `2^88 + 0x13b`), then combines
+//! the six 128-bit part digests (u128 LE each, same order) with FNV-1a-128.
+//! It exists for rollback libraries that want a wider hash; the 64-bit value
+//! is not a truncation of it.
 
+use crate::constraints::{Anchor, Constraint};
 use crate::dynamics::BodyKind;
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2};
@@ -37,6 +53,41 @@ use crate::world::World;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;
+const FNV128_OFFSET: u128 = 0x6c62_272e_07bb_0142_62b8_2175_6295_c58d;
+const FNV128_PRIME: u128 = 0x0000_0000_0100_0000_0000_0000_0000_013b;
+
+/// Something the canonical byte stream of the state can be fed into: the
+/// 64-bit and the 128-bit FNV-1a hashers. The part digests are written once,
+/// generically, so both hashes see exactly the same bytes.
+pub trait StateSink {
+    /// Feeds raw bytes.
+    fn bytes(&mut self, bytes: &[u8]);
+    /// Feeds one byte.
+    fn u8(&mut self, v: u8) {
+        self.bytes(&[v]);
+    }
+    /// Feeds a boolean as 0 or 1.
+    fn bool(&mut self, v: bool) {
+        self.u8(u8::from(v));
+    }
+    /// Feeds a `u32`, little endian.
+    fn u32(&mut self, v: u32) {
+        self.bytes(&v.to_le_bytes());
+    }
+    /// Feeds a `u64`, little endian.
+    fn u64(&mut self, v: u64) {
+        self.bytes(&v.to_le_bytes());
+    }
+    /// Feeds a scalar's canonical bits.
+    fn scalar<S: Scalar>(&mut self, v: S) {
+        self.u64(v.to_hash_bits());
+    }
+    /// Feeds a vector (x then y).
+    fn vec2<S: Scalar>(&mut self, v: Vec2<S>) {
+        self.scalar(v.x);
+        self.scalar(v.y);
+    }
+}
 
 /// An FNV-1a-64 hasher fed with canonical little-endian values.
 #[derive(Clone, Copy, Debug)]
@@ -88,6 +139,43 @@ impl StateHasher {
     }
 }
 
+impl StateSink for StateHasher {
+    fn bytes(&mut self, bytes: &[u8]) {
+        StateHasher::bytes(self, bytes);
+    }
+}
+
+/// An FNV-1a-128 hasher fed with canonical little-endian values (the
+/// 128-bit twin of [`StateHasher`]).
+#[derive(Clone, Copy, Debug)]
+pub struct StateHasher128(u128);
+
+impl Default for StateHasher128 {
+    fn default() -> Self {
+        StateHasher128(FNV128_OFFSET)
+    }
+}
+
+impl StateHasher128 {
+    /// The digest so far.
+    #[must_use]
+    pub fn finish(&self) -> u128 {
+        self.0
+    }
+}
+
+impl StateSink for StateHasher128 {
+    fn bytes(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 ^= u128::from(b);
+            self.0 = self.0.wrapping_mul(FNV128_PRIME);
+        }
+    }
+}
+
+/// Number of parts of the state hash (see the module docs).
+pub const PART_COUNT: usize = 6;
+
 /// The per-part digests of a world's state (see the module docs).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StateDigest {
@@ -101,6 +189,8 @@ pub struct StateDigest {
     pub sleep: u64,
     /// The id allocator's free list.
     pub allocator: u64,
+    /// Constraints (springs, ropes) and their solver state.
+    pub constraints: u64,
 }
 
 impl StateDigest {
@@ -108,27 +198,55 @@ impl StateDigest {
     #[must_use]
     pub fn combined(&self) -> u64 {
         let mut h = StateHasher::default();
-        for part in [self.world, self.bodies, self.contacts, self.sleep, self.allocator] {
+        for (_, part) in self.parts() {
             h.u64(part);
         }
         h.finish()
     }
 
+    /// Every part as `(name, digest)`, in hash order. Replays store these
+    /// values so that a later mismatch can name the part.
+    #[must_use]
+    pub fn parts(&self) -> [(&'static str, u64); PART_COUNT] {
+        [
+            ("world", self.world),
+            ("bodies", self.bodies),
+            ("contacts", self.contacts),
+            ("sleep", self.sleep),
+            ("allocator", self.allocator),
+            ("constraints", self.constraints),
+        ]
+    }
+
     /// Names of the parts that differ between two digests.
     #[must_use]
     pub fn differing_parts(&self, other: &StateDigest) -> Vec<&'static str> {
-        let pairs = [
-            ("world", self.world, other.world),
-            ("bodies", self.bodies, other.bodies),
-            ("contacts", self.contacts, other.contacts),
-            ("sleep", self.sleep, other.sleep),
-            ("allocator", self.allocator, other.allocator),
-        ];
-        pairs
-            .iter()
-            .filter(|(_, a, b)| a != b)
-            .map(|(name, _, _)| *name)
+        self.parts()
+            .into_iter()
+            .zip(other.parts())
+            .filter(|((_, a), (_, b))| a != b)
+            .map(|((name, _), _)| name)
             .collect()
+    }
+}
+
+fn hash_anchor<S: Scalar, H: StateSink>(h: &mut H, anchor: &Anchor<S>) {
+    match *anchor {
+        Anchor::Point(p) => {
+            h.u8(0);
+            h.vec2(p);
+        }
+        Anchor::Body(id) => {
+            h.u8(1);
+            h.u32(id.index());
+            h.u32(id.generation());
+        }
+        Anchor::BodyOffset(id, offset) => {
+            h.u8(2);
+            h.u32(id.index());
+            h.u32(id.generation());
+            h.vec2(offset);
+        }
     }
 }
 
@@ -158,18 +276,54 @@ impl<S: Scalar> World<S> {
     /// The per-part digests of the state.
     #[must_use]
     pub fn state_digest(&self) -> StateDigest {
+        let [world, bodies, contacts, sleep, allocator, constraints] =
+            self.part_hashers::<StateHasher>();
         StateDigest {
-            world: self.digest_world(),
-            bodies: self.digest_bodies(),
-            contacts: self.digest_contacts(),
-            sleep: self.digest_sleep(),
-            allocator: self.digest_allocator(),
+            world: world.finish(),
+            bodies: bodies.finish(),
+            contacts: contacts.finish(),
+            sleep: sleep.finish(),
+            allocator: allocator.finish(),
+            constraints: constraints.finish(),
         }
     }
 
-    fn digest_world(&self) -> u64 {
+    /// The 128-bit state hash (see [`crate::hash`], "The 128-bit form"), for
+    /// rollback libraries that want a wider digest than [`Self::state_hash`].
+    ///
+    /// ```
+    /// use clockwork2d::prelude::*;
+    /// let mut a: World = World::new(WorldSettings::default());
+    /// let b = a.clone();
+    /// a.step();
+    /// assert_ne!(a.state_hash128(), b.state_hash128());
+    /// ```
+    #[must_use]
+    pub fn state_hash128(&self) -> u128 {
+        let mut h = StateHasher128::default();
+        for part in self.part_hashers::<StateHasher128>() {
+            h.bytes(&part.finish().to_le_bytes());
+        }
+        h.finish()
+    }
+
+    /// One hasher per part, each fed its part's canonical bytes: the single
+    /// place that lists the parts and their order, so the 64- and the
+    /// 128-bit hashes cannot disagree about what the state is.
+    fn part_hashers<H: StateSink + Default>(&self) -> [H; PART_COUNT] {
+        let mut parts: [H; PART_COUNT] = Default::default();
+        let [world, bodies, contacts, sleep, allocator, constraints] = &mut parts;
+        self.feed_world(world);
+        self.feed_bodies(bodies);
+        self.feed_contacts(contacts);
+        self.feed_sleep(sleep);
+        self.feed_allocator(allocator);
+        self.feed_constraints(constraints);
+        parts
+    }
+
+    fn feed_world<H: StateSink>(&self, h: &mut H) {
         let s = &self.settings;
-        let mut h = StateHasher::default();
         h.u8(S::ID);
         h.u64(self.tick);
         h.vec2(s.gravity);
@@ -192,11 +346,9 @@ impl<S: Scalar> World<S> {
         }
         h.vec2(s.bounds.center);
         h.vec2(s.bounds.half_extents);
-        h.finish()
     }
 
-    fn digest_bodies(&self) -> u64 {
-        let mut h = StateHasher::default();
+    fn feed_bodies<H: StateSink>(&self, h: &mut H) {
         h.u32(len_u32(self.slots.len()));
         for slot in &self.slots {
             h.u32(slot.generation);
@@ -219,7 +371,13 @@ impl<S: Scalar> World<S> {
             }
             h.vec2(b.position);
             h.vec2(b.velocity);
-            for v in [b.mass, b.inverse_mass, b.restitution, b.friction, b.gravity_scale] {
+            for v in [
+                b.mass,
+                b.inverse_mass,
+                b.restitution,
+                b.friction,
+                b.gravity_scale,
+            ] {
                 h.scalar(v);
             }
             h.bool(b.bullet);
@@ -228,11 +386,9 @@ impl<S: Scalar> World<S> {
             h.scalar(b.sleep_time);
             h.u32(b.island);
         }
-        h.finish()
     }
 
-    fn digest_contacts(&self) -> u64 {
-        let mut h = StateHasher::default();
+    fn feed_contacts<H: StateSink>(&self, h: &mut H) {
         h.u32(len_u32(self.contacts.len()));
         for c in &self.contacts {
             h.u32(c.a);
@@ -241,11 +397,9 @@ impl<S: Scalar> World<S> {
             h.scalar(c.tangent_impulse);
             h.bool(c.touching);
         }
-        h.finish()
     }
 
-    fn digest_sleep(&self) -> u64 {
-        let mut h = StateHasher::default();
+    fn feed_sleep<H: StateSink>(&self, h: &mut H) {
         h.u32(len_u32(self.sleeping_islands.len()));
         for (key, members) in &self.sleeping_islands {
             h.u32(*key);
@@ -254,16 +408,66 @@ impl<S: Scalar> World<S> {
                 h.u32(*m);
             }
         }
-        h.finish()
     }
 
-    fn digest_allocator(&self) -> u64 {
-        let mut h = StateHasher::default();
+    fn feed_constraints<H: StateSink>(&self, h: &mut H) {
+        h.u32(len_u32(self.constraint_slots.len()));
+        for slot in &self.constraint_slots {
+            h.u32(slot.generation);
+            h.bool(slot.entry.is_some());
+            let Some(entry) = &slot.entry else { continue };
+            let (a, b) = entry.constraint.anchors();
+            let tag = match entry.constraint {
+                Constraint::BendySpring { .. } => 0,
+                Constraint::RadialSpring { .. } => 1,
+                Constraint::Rope { .. } => 2,
+            };
+            h.u8(tag);
+            hash_anchor(h, &a);
+            hash_anchor(h, &b);
+            match entry.constraint {
+                Constraint::BendySpring {
+                    rest_offset,
+                    stiffness,
+                    damping,
+                    ..
+                } => {
+                    h.vec2(rest_offset);
+                    h.vec2(stiffness);
+                    h.scalar(damping);
+                }
+                Constraint::RadialSpring {
+                    rest_length,
+                    stiffness,
+                    damping,
+                    ..
+                } => {
+                    h.scalar(rest_length);
+                    h.scalar(stiffness);
+                    h.scalar(damping);
+                }
+                Constraint::Rope {
+                    max_length,
+                    restitution,
+                    ..
+                } => {
+                    h.scalar(max_length);
+                    h.scalar(restitution);
+                }
+            }
+            h.scalar(entry.impulse);
+        }
+        h.u32(len_u32(self.constraint_free_list.len()));
+        for i in &self.constraint_free_list {
+            h.u32(*i);
+        }
+    }
+
+    fn feed_allocator<H: StateSink>(&self, h: &mut H) {
         h.u32(len_u32(self.free_list.len()));
         for i in &self.free_list {
             h.u32(*i);
         }
-        h.finish()
     }
 }
 
@@ -279,6 +483,21 @@ mod tests {
         let mut a = StateHasher::default();
         a.bytes(b"a");
         assert_eq!(a.finish(), 0xaf63_dc4c_8601_ec8c);
+    }
+
+    #[test]
+    fn fnv1a_128_matches_the_published_test_vectors() {
+        // FNV-1a 128 of "", "a" and "foobar" (FNV reference test suite).
+        assert_eq!(
+            StateHasher128::default().finish(),
+            0x6c62_272e_07bb_0142_62b8_2175_6295_c58d
+        );
+        let mut a = StateHasher128::default();
+        StateSink::bytes(&mut a, b"a");
+        assert_eq!(a.finish(), 0xd228_cb69_6f1a_8caf_7891_2b70_4e4a_8964);
+        let mut f = StateHasher128::default();
+        StateSink::bytes(&mut f, b"foobar");
+        assert_eq!(f.finish(), 0x343e_1662_793c_64bf_6f0d_3597_ba44_6f18);
     }
 
     #[test]

@@ -16,13 +16,16 @@
 #![deny(clippy::float_arithmetic)]
 
 mod collision;
+pub mod constraints;
 pub mod dynamics;
 pub mod geometry;
 pub mod hash;
 pub mod math;
 pub mod scene;
+pub mod snapshot;
 pub mod world;
 
+pub use constraints::{Anchor, Constraint, ConstraintId};
 pub use dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
 pub use math::{Fx, Scalar, Vec2, WideScalar, fx};
 pub use world::{
@@ -31,10 +34,11 @@ pub use world::{
 
 /// Everything a typical user needs, in one import.
 pub mod prelude {
+    pub use crate::constraints::{Anchor, Constraint, ConstraintId};
     pub use crate::dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
     pub use crate::geometry::*;
+    pub use crate::math::{Fx, Scalar, Vec2, WORLD_LIMIT, WideScalar, fx};
     pub use crate::world::{
         BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
     };
-    pub use crate::math::{Fx, Scalar, Vec2, WORLD_LIMIT, WideScalar, fx};
 }

@@ -136,7 +136,11 @@ fn oracle_circle_aabb(a: &Circle, b: &Aabb) -> Contact {
 ///
 /// Magnitudes within the bounds: coordinates ≤ 2²⁵ units, `den = d·d ≤ 2⁵³`,
 /// `num << 32 ≤ 2⁸⁵`, `d_i · num · 2²² ≤ 2¹⁰¹`: all fit `i128`.
-fn oracle_segment(a: (i64, i64), b: (i64, i64), p: (i64, i64)) -> (i128, Option<[(i128, i128); 2]>) {
+fn oracle_segment(
+    a: (i64, i64),
+    b: (i64, i64),
+    p: (i64, i64),
+) -> (i128, Option<[(i128, i128); 2]>) {
     let d = (i128::from(b.0 - a.0), i128::from(b.1 - a.1));
     let w = (i128::from(p.0 - a.0), i128::from(p.1 - a.1));
     let den = d.0 * d.0 + d.1 * d.1;
@@ -150,7 +154,12 @@ fn oracle_segment(a: (i64, i64), b: (i64, i64), p: (i64, i64)) -> (i128, Option<
     let scaled = num << 32;
     let t = scaled / den + i128::from(2 * (scaled % den) >= den);
     // point_i = a_i + d_i·num/den, with a_i in 2⁻³² units = a_i·2²².
-    let comp = |a_i: i64, d_i: i128| (i128::from(a_i) * (1 << 22) * den + d_i * num * (1 << 22), den);
+    let comp = |a_i: i64, d_i: i128| {
+        (
+            i128::from(a_i) * (1 << 22) * den + d_i * num * (1 << 22),
+            den,
+        )
+    };
     (t, Some([comp(a.0, d.0), comp(a.1, d.1)]))
 }
 
@@ -201,14 +210,16 @@ fn aabb_pair() -> impl Strategy<Value = (Aabb, Aabb)> {
 }
 
 fn circle_aabb_pair() -> impl Strategy<Value = (Circle, Aabb)> {
-    ((coord(), coord(), offset(), offset()), (extent(), extent(), extent())).prop_map(
-        |((x, y, dx, dy), (r, hx, hy))| {
+    (
+        (coord(), coord(), offset(), offset()),
+        (extent(), extent(), extent()),
+    )
+        .prop_map(|((x, y, dx, dy), (r, hx, hy))| {
             (
                 Circle::new(v(x + dx, y + dy), q(r)),
                 Aabb::new(v(x, y), v(hx, hy)),
             )
-        },
-    )
+        })
 }
 
 /// Segment `a → b` and query point `p`, in input units, all within ±2¹⁵.
@@ -319,7 +330,11 @@ fn closest_point_hand_computed() {
     assert_eq!((c.t, c.point), (fx(0.75), v(UNIT, 0)));
     // A segment two ulps long: d·d = 2⁻⁶², still resolved exactly.
     let e = Fx::DELTA;
-    let c = closest_point_on_segment(Vec2::ZERO, Vec2::new(e.mul_int(2), Fx::ZERO), Vec2::new(e, Fx::ONE));
+    let c = closest_point_on_segment(
+        Vec2::ZERO,
+        Vec2::new(e.mul_int(2), Fx::ZERO),
+        Vec2::new(e, Fx::ONE),
+    );
     assert_eq!((c.t, c.point), (fx(0.5), Vec2::new(e, Fx::ZERO)));
 }
 
@@ -457,7 +472,13 @@ fn circle_circle_at_world_bounds() {
     assert!((f(c.separation) - (65536.0 * 2f64.sqrt() - 8000.0)).abs() < 2.0 * ULP);
     // Along an edge: exact.
     let b = Circle::new(v(l, -l), q(4000 * UNIT));
-    assert_eq!(contact_circle_circle(&a, &b), Contact { normal: Vec2::X, separation: fx(57_536.0) });
+    assert_eq!(
+        contact_circle_circle(&a, &b),
+        Contact {
+            normal: Vec2::X,
+            separation: fx(57_536.0)
+        }
+    );
 }
 
 /// Beyond the bounds, everything saturates (centre difference to `Fx::MAX`,
@@ -470,8 +491,16 @@ fn circle_circle_beyond_bounds_is_defined() {
     let a = Circle::new(Vec2::new(Fx::MIN, Fx::MIN), Fx::MAX);
     let b = Circle::new(Vec2::new(Fx::MAX, Fx::MAX), Fx::MAX);
     let c = contact_circle_circle(&a, &b);
-    let diagonal = Vec2::new(Fx::MAX, Fx::MAX).try_normalize().expect("nonzero");
-    assert_eq!(c, Contact { normal: diagonal, separation: Fx::ZERO });
+    let diagonal = Vec2::new(Fx::MAX, Fx::MAX)
+        .try_normalize()
+        .expect("nonzero");
+    assert_eq!(
+        c,
+        Contact {
+            normal: diagonal,
+            separation: Fx::ZERO
+        }
+    );
     assert!((f(c.normal.x) - 0.5f64.sqrt()).abs() < 2.0 * ULP);
 }
 
@@ -479,8 +508,12 @@ fn circle_circle_beyond_bounds_is_defined() {
 
 /// The two signed axis gaps, computed independently in integers.
 fn gaps(a: &Aabb, b: &Aabb) -> (i128, i128) {
-    let gx = (bits(b.center.x) - bits(a.center.x)).abs() - bits(a.half_extents.x) - bits(b.half_extents.x);
-    let gy = (bits(b.center.y) - bits(a.center.y)).abs() - bits(a.half_extents.y) - bits(b.half_extents.y);
+    let gx = (bits(b.center.x) - bits(a.center.x)).abs()
+        - bits(a.half_extents.x)
+        - bits(b.half_extents.x);
+    let gy = (bits(b.center.y) - bits(a.center.y)).abs()
+        - bits(a.half_extents.y)
+        - bits(b.half_extents.y);
     (gx, gy)
 }
 
@@ -587,13 +620,31 @@ fn aabb_aabb_at_world_bounds() {
     let l = WORLD;
     let a = Aabb::new(v(-l, 0), v(4000 * UNIT, 4000 * UNIT));
     let b = Aabb::new(v(l, 0), v(4000 * UNIT, 4000 * UNIT));
-    assert_eq!(contact_aabb_aabb(&a, &b), Contact { normal: Vec2::X, separation: fx(57_536.0) });
-    assert_eq!(contact_aabb_aabb(&b, &a), Contact { normal: -Vec2::X, separation: fx(57_536.0) });
+    assert_eq!(
+        contact_aabb_aabb(&a, &b),
+        Contact {
+            normal: Vec2::X,
+            separation: fx(57_536.0)
+        }
+    );
+    assert_eq!(
+        contact_aabb_aabb(&b, &a),
+        Contact {
+            normal: -Vec2::X,
+            separation: fx(57_536.0)
+        }
+    );
     // Beyond: the offset saturates to MAX and the half-extent sum to MAX.
     let a = Aabb::new(Vec2::new(Fx::MIN, Fx::MIN), Vec2::new(Fx::MAX, Fx::ONE));
     let b = Aabb::new(Vec2::new(Fx::MAX, Fx::MIN), Vec2::new(Fx::MAX, Fx::ONE));
     let c = contact_aabb_aabb(&a, &b);
-    assert_eq!(c, Contact { normal: Vec2::X, separation: Fx::ZERO });
+    assert_eq!(
+        c,
+        Contact {
+            normal: Vec2::X,
+            separation: Fx::ZERO
+        }
+    );
 }
 
 // ---------------------------------------------------------------- circle–aabb
@@ -674,25 +725,73 @@ fn circle_aabb_hand_computed() {
     let b = Aabb::new(v(0, 0), v(2 * UNIT, UNIT));
     let at = |x: i64, y: i64, r: i64| contact_circle_aabb(&Circle::new(v(x, y), q(r)), &b);
     // Above the top face, gap 0.5: normal −Y (from circle down to box).
-    assert_eq!(at(UNIT, 2 * UNIT, UNIT / 2), Contact { normal: -Vec2::Y, separation: fx(0.5) });
+    assert_eq!(
+        at(UNIT, 2 * UNIT, UNIT / 2),
+        Contact {
+            normal: -Vec2::Y,
+            separation: fx(0.5)
+        }
+    );
     // Corner region: v = (3, 4), distance 5.
     let c = at(5 * UNIT, 5 * UNIT, UNIT);
     assert_eq!(c.separation, fx(4.0));
     assert_eq!(c.normal.x.to_bits(), -((3i64 << 32) / 5));
     assert_eq!(c.normal.y.to_bits(), -((4i64 << 32) / 5));
     // Centre exactly on the right edge: depth 0 → separation −r, face normal.
-    assert_eq!(at(2 * UNIT, UNIT / 2, UNIT / 2), Contact { normal: -Vec2::X, separation: fx(-0.5) });
+    assert_eq!(
+        at(2 * UNIT, UNIT / 2, UNIT / 2),
+        Contact {
+            normal: -Vec2::X,
+            separation: fx(-0.5)
+        }
+    );
     // Exactly on the bottom edge.
-    assert_eq!(at(UNIT, -UNIT, UNIT / 2), Contact { normal: Vec2::Y, separation: fx(-0.5) });
+    assert_eq!(
+        at(UNIT, -UNIT, UNIT / 2),
+        Contact {
+            normal: Vec2::Y,
+            separation: fx(-0.5)
+        }
+    );
     // Exactly on a corner: equal depths (0), the y face.
-    assert_eq!(at(2 * UNIT, UNIT, UNIT / 2), Contact { normal: -Vec2::Y, separation: fx(-0.5) });
-    assert_eq!(at(-2 * UNIT, -UNIT, UNIT / 2), Contact { normal: Vec2::Y, separation: fx(-0.5) });
+    assert_eq!(
+        at(2 * UNIT, UNIT, UNIT / 2),
+        Contact {
+            normal: -Vec2::Y,
+            separation: fx(-0.5)
+        }
+    );
+    assert_eq!(
+        at(-2 * UNIT, -UNIT, UNIT / 2),
+        Contact {
+            normal: Vec2::Y,
+            separation: fx(-0.5)
+        }
+    );
     // Inside, nearest face is x (depth 0.5 < 0.75): −(0.5 + 0.5).
-    assert_eq!(at(3 * UNIT / 2, UNIT / 4, UNIT / 2), Contact { normal: -Vec2::X, separation: fx(-1.0) });
+    assert_eq!(
+        at(3 * UNIT / 2, UNIT / 4, UNIT / 2),
+        Contact {
+            normal: -Vec2::X,
+            separation: fx(-1.0)
+        }
+    );
     // Inside, left half: pushed out through −X, so the normal is +X.
-    assert_eq!(at(-7 * UNIT / 4, -UNIT / 2, UNIT / 2), Contact { normal: Vec2::X, separation: fx(-0.75) });
+    assert_eq!(
+        at(-7 * UNIT / 4, -UNIT / 2, UNIT / 2),
+        Contact {
+            normal: Vec2::X,
+            separation: fx(-0.75)
+        }
+    );
     // Inside, nearest face is y.
-    assert_eq!(at(UNIT / 2, -3 * UNIT / 4, UNIT / 2), Contact { normal: Vec2::Y, separation: fx(-0.75) });
+    assert_eq!(
+        at(UNIT / 2, -3 * UNIT / 4, UNIT / 2),
+        Contact {
+            normal: Vec2::Y,
+            separation: fx(-0.75)
+        }
+    );
 }
 
 #[test]
@@ -702,14 +801,32 @@ fn circle_aabb_centre_at_box_centre() {
     let sq = Aabb::new(v(3 * UNIT, 3 * UNIT), v(UNIT, UNIT));
     let ball = Circle::new(v(3 * UNIT, 3 * UNIT), q(UNIT / 4));
     let c = contact_circle_aabb(&ball, &sq);
-    assert_eq!(c, Contact { normal: Vec2::Y, separation: fx(-1.25) });
-    assert_eq!(contact_aabb_circle(&sq, &ball), Contact { normal: -Vec2::Y, separation: fx(-1.25) });
+    assert_eq!(
+        c,
+        Contact {
+            normal: Vec2::Y,
+            separation: fx(-1.25)
+        }
+    );
+    assert_eq!(
+        contact_aabb_circle(&sq, &ball),
+        Contact {
+            normal: -Vec2::Y,
+            separation: fx(-1.25)
+        }
+    );
     // Wide box: y is the least-penetration axis, +Y.
     let wide = Aabb::new(v(3 * UNIT, 3 * UNIT), v(4 * UNIT, UNIT));
     assert_eq!(contact_circle_aabb(&ball, &wide).normal, Vec2::Y);
     // Tall box: x is the least-penetration axis, zero offset → +X.
     let tall = Aabb::new(v(3 * UNIT, 3 * UNIT), v(UNIT, 4 * UNIT));
-    assert_eq!(contact_circle_aabb(&ball, &tall), Contact { normal: Vec2::X, separation: fx(-1.25) });
+    assert_eq!(
+        contact_circle_aabb(&ball, &tall),
+        Contact {
+            normal: Vec2::X,
+            separation: fx(-1.25)
+        }
+    );
 }
 
 #[test]
@@ -724,13 +841,25 @@ fn circle_aabb_at_world_bounds() {
     assert!((f(c.separation) - expected).abs() < 2.0 * ULP);
     // Face region: exact.
     let ball = Circle::new(v(-l, l), q(3000 * UNIT));
-    assert_eq!(contact_circle_aabb(&ball, &bx), Contact { normal: Vec2::X, separation: fx(61_536.0) });
+    assert_eq!(
+        contact_circle_aabb(&ball, &bx),
+        Contact {
+            normal: Vec2::X,
+            separation: fx(61_536.0)
+        }
+    );
     // Beyond: the offset q = MIN − MAX saturates to MIN = −2³¹, v = MIN + 1
     // (face region), distance 2³¹ − 1, separation (2³¹ − 1) − MAX = −(1 − ulp).
     let ball = Circle::new(Vec2::new(Fx::MIN, Fx::ZERO), Fx::MAX);
     let bx = Aabb::new(Vec2::new(Fx::MAX, Fx::ZERO), Vec2::new(Fx::ONE, Fx::ONE));
     let c = contact_circle_aabb(&ball, &bx);
-    assert_eq!(c, Contact { normal: Vec2::X, separation: Fx::DELTA.sub(Fx::ONE) });
+    assert_eq!(
+        c,
+        Contact {
+            normal: Vec2::X,
+            separation: Fx::DELTA.sub(Fx::ONE)
+        }
+    );
 }
 
 // ---------------------------------------------------------------- other scalars
@@ -744,11 +873,15 @@ fn other_scalars_agree_with_f64() {
     let u48 = 2f64.powi(-16);
     let mut seed = 0x1234_5678_9abc_def0u64;
     let mut next = |range: i64| {
-        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
         ((seed >> 33) as i64).rem_euclid(2 * range + 1) - range
     };
     for _ in 0..2000 {
-        let p: Vec<f64> = (0..8).map(|_| next(8 * UNIT) as f64 / UNIT as f64).collect();
+        let p: Vec<f64> = (0..8)
+            .map(|_| next(8 * UNIT) as f64 / UNIT as f64)
+            .collect();
         let r = (next(4 * UNIT).abs() + 1) as f64 / UNIT as f64;
         let a64 = Circle::new(Vec2::new(p[0], p[1]), r);
         let b64 = Circle::new(Vec2::new(p[2], p[3]), r);
@@ -770,7 +903,11 @@ fn other_scalars_agree_with_f64() {
         );
         assert!((f64::from(c32.separation) - reference.separation).abs() <= 1e-4);
 
-        let (sa, sb, sp) = (Vec2::new(p[4], p[5]), Vec2::new(p[6], p[7]), Vec2::new(p[0], p[1]));
+        let (sa, sb, sp) = (
+            Vec2::new(p[4], p[5]),
+            Vec2::new(p[6], p[7]),
+            Vec2::new(p[0], p[1]),
+        );
         let seg = closest_point_on_segment(sa, sb, sp);
         let s48 = closest_point_on_segment(sa.cast::<I48F16>(), sb.cast(), sp.cast());
         assert!((s48.t.to_f64() - seg.t).abs() <= u48 / 2.0 + 1e-12);
@@ -782,10 +919,16 @@ fn other_scalars_agree_with_f64() {
         let box64 = Aabb::new(Vec2::new(p[4], p[5]), Vec2::new(r, r * 0.5));
         let box48 = Aabb::new(box64.center.cast::<I48F16>(), box64.half_extents.cast());
         let ca = contact_circle_aabb(&a64, &box64);
-        let ca48 = contact_circle_aabb(&Circle::new(a64.center.cast::<I48F16>(), I48F16::from_f64(r)), &box48);
+        let ca48 = contact_circle_aabb(
+            &Circle::new(a64.center.cast::<I48F16>(), I48F16::from_f64(r)),
+            &box48,
+        );
         assert!((ca48.separation.to_f64() - ca.separation).abs() <= u48 + 1e-12);
         let bb = contact_aabb_aabb(&box64, &a64.bounding_aabb());
-        let bb48 = contact_aabb_aabb(&box48, &Circle::new(a64.center.cast::<I48F16>(), I48F16::from_f64(r)).bounding_aabb());
+        let bb48 = contact_aabb_aabb(
+            &box48,
+            &Circle::new(a64.center.cast::<I48F16>(), I48F16::from_f64(r)).bounding_aabb(),
+        );
         assert_eq!(bb48.separation.to_f64(), bb.separation);
     }
 }

@@ -15,7 +15,11 @@ use clockwork2d::World;
 use clockwork2d::scene::{BUILTIN_SCENES, DEFAULT_SCENE, Scene, SceneError, builtin};
 
 #[derive(Parser)]
-#[command(name = "clockwork2d", version, about = "A deterministic 2D physics engine")]
+#[command(
+    name = "clockwork2d",
+    version,
+    about = "A deterministic 2D physics engine"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Cmd>,
@@ -42,7 +46,9 @@ enum Cmd {
 fn load(scene: &str) -> Result<Scene, SceneError> {
     match builtin(scene) {
         Ok(s) => Ok(s),
-        Err(SceneError::Unknown(_)) if Path::new(scene).exists() => Scene::from_file(Path::new(scene)),
+        Err(SceneError::Unknown(_)) if Path::new(scene).exists() => {
+            Scene::from_file(Path::new(scene))
+        }
         Err(e) => Err(e),
     }
 }
@@ -83,7 +89,11 @@ fn main() -> ExitCode {
         ticks: 600,
         hash_every: 60,
     }) {
-        Cmd::Run { scene, ticks, hash_every } => run(&scene, ticks, hash_every),
+        Cmd::Run {
+            scene,
+            ticks,
+            hash_every,
+        } => run(&scene, ticks, hash_every),
         Cmd::Scenes => {
             for (name, _) in BUILTIN_SCENES {
                 println!("{name}");

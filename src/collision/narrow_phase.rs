@@ -1,9 +1,8 @@
 //! Narrow phase: one function per shape pair, chosen by the shapes.
 
 use crate::geometry::{
-    Aabb, Circle, Contact, Shape, Toi, contact_aabb_aabb, contact_aabb_circle,
-    contact_circle_aabb, contact_circle_circle, toi_aabb_aabb, toi_circle_aabb,
-    toi_circle_circle,
+    Aabb, Circle, Contact, Shape, Toi, contact_aabb_aabb, contact_aabb_circle, contact_circle_aabb,
+    contact_circle_circle, toi_aabb_aabb, toi_circle_aabb, toi_circle_circle,
 };
 use crate::math::{Scalar, Vec2};
 
@@ -47,12 +46,20 @@ pub(crate) fn shape_toi<S: Scalar>(
         (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) => {
             toi_circle_circle(&Circle::new(pa, ra), da, &Circle::new(pb, rb), db)
         }
-        (Shape::Circle { radius }, Shape::Aabb { half_extents }) => {
-            toi_circle_aabb(&Circle::new(pa, radius), da, &Aabb::new(pb, half_extents), db)
-        }
+        (Shape::Circle { radius }, Shape::Aabb { half_extents }) => toi_circle_aabb(
+            &Circle::new(pa, radius),
+            da,
+            &Aabb::new(pb, half_extents),
+            db,
+        ),
         (Shape::Aabb { half_extents }, Shape::Circle { radius }) => {
             // Swap roles and flip the normal back to a → b.
-            match toi_circle_aabb(&Circle::new(pb, radius), db, &Aabb::new(pa, half_extents), da) {
+            match toi_circle_aabb(
+                &Circle::new(pb, radius),
+                db,
+                &Aabb::new(pa, half_extents),
+                da,
+            ) {
                 Toi::Hit { t, normal } => Toi::Hit { t, normal: -normal },
                 other => other,
             }

@@ -2,6 +2,7 @@
 //! steady state allocates nothing. Derived data: never part of the state.
 
 use super::broad_phase::Proxy;
+use crate::constraints::rope_block::BlockScratch;
 use crate::dynamics::contact_solver::ContactConstraint;
 use crate::math::{Scalar, Vec2};
 
@@ -20,4 +21,15 @@ pub(crate) struct StepScratch<S: Scalar> {
     pub(crate) displacements: Vec<Vec2<S>>,
     /// Union-find parents for islands.
     pub(crate) parents: Vec<u32>,
+    /// Velocity change each slot received from springs this substep (the
+    /// trapezoidal rule moves positions by only half of it).
+    pub(crate) spring_dv: Vec<Vec2<S>>,
+    /// Active rope rows, solved in the same loop as the contacts.
+    pub(crate) rope_rows: Vec<ContactConstraint<S>>,
+    /// The constraint slot of each rope row.
+    pub(crate) rope_slots: Vec<u32>,
+    /// Rope rows grouped by shared bodies (chains), for the block solver.
+    pub(crate) rope_groups: Vec<Vec<usize>>,
+    /// Working memory of the block solver.
+    pub(crate) rope_block: BlockScratch<S>,
 }

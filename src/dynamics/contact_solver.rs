@@ -77,7 +77,10 @@ impl<S: Scalar> ContactConstraint<S> {
 }
 
 /// Applies the warm-start impulses.
-pub(crate) fn warm_start<S: Scalar>(constraints: &[ContactConstraint<S>], velocities: &mut [Vec2<S>]) {
+pub(crate) fn warm_start<S: Scalar>(
+    constraints: &[ContactConstraint<S>],
+    velocities: &mut [Vec2<S>],
+) {
     for c in constraints {
         let tangent = c.normal.perp();
         let impulse = c.normal.scale(c.normal_impulse) + tangent.scale(c.tangent_impulse);
@@ -102,34 +105,40 @@ pub(crate) fn solve_velocities<S: Scalar>(
     velocities: &mut [Vec2<S>],
 ) {
     for c in constraints.iter_mut() {
-        let (ia, ib) = (c.a as usize, c.b as usize);
-        let tangent = c.normal.perp();
+        solve_velocity_row(c, velocities);
+    }
+}
 
-        // Friction first, bounded by the normal impulse of the last pass.
-        let relative = velocities[ib] - velocities[ia];
-        let vt = relative.dot(tangent);
-        let limit = c.friction.mul(c.normal_impulse);
-        let old_t = c.tangent_impulse;
-        c.tangent_impulse = old_t
-            .sub(vt.mul(c.effective_mass))
-            .clamp(limit.neg(), limit);
-        let dt_impulse = c.tangent_impulse.sub(old_t);
-        if dt_impulse != S::ZERO {
-            let snapshot = *c;
-            apply(&snapshot, tangent.scale(dt_impulse), velocities);
-        }
+/// One sequential-impulse update of one row: friction (bounded by the
+/// normal impulse of the last pass), then the normal impulse.
+#[inline]
+pub(crate) fn solve_velocity_row<S: Scalar>(c: &mut ContactConstraint<S>, velocities: &mut [Vec2<S>]) {
+    let (ia, ib) = (c.a as usize, c.b as usize);
+    let tangent = c.normal.perp();
 
-        // Normal: drive v_n to at least the target, accumulated λ ≥ 0.
-        let relative = velocities[ib] - velocities[ia];
-        let vn = relative.dot(c.normal);
-        let old_n = c.normal_impulse;
-        let lambda = c.target_velocity.sub(vn).mul(c.effective_mass);
-        c.normal_impulse = old_n.add(lambda).max(S::ZERO);
-        let dn = c.normal_impulse.sub(old_n);
-        if dn != S::ZERO {
-            let snapshot = *c;
-            apply(&snapshot, c.normal.scale(dn), velocities);
-        }
+    let relative = velocities[ib] - velocities[ia];
+    let vt = relative.dot(tangent);
+    let limit = c.friction.mul(c.normal_impulse);
+    let old_t = c.tangent_impulse;
+    c.tangent_impulse = old_t
+        .sub(vt.mul(c.effective_mass))
+        .clamp(limit.neg(), limit);
+    let dt_impulse = c.tangent_impulse.sub(old_t);
+    if dt_impulse != S::ZERO {
+        let snapshot = *c;
+        apply(&snapshot, tangent.scale(dt_impulse), velocities);
+    }
+
+    // Normal: drive v_n to at least the target, accumulated λ ≥ 0.
+    let relative = velocities[ib] - velocities[ia];
+    let vn = relative.dot(c.normal);
+    let old_n = c.normal_impulse;
+    let lambda = c.target_velocity.sub(vn).mul(c.effective_mass);
+    c.normal_impulse = old_n.add(lambda).max(S::ZERO);
+    let dn = c.normal_impulse.sub(old_n);
+    if dn != S::ZERO {
+        let snapshot = *c;
+        apply(&snapshot, c.normal.scale(dn), velocities);
     }
 }
 
@@ -147,24 +156,36 @@ pub(crate) fn solve_positions<S: Scalar>(
     max_correction: S,
 ) {
     for c in constraints {
-        let (ia, ib) = (c.a as usize, c.b as usize);
-        let separation = c
-            .separation
-            .add((displacements[ib] - displacements[ia]).dot(c.normal));
-        // C ≤ 0 is the penetration beyond the slop, scaled and bounded.
-        let correction = beta
-            .mul(separation.add(slop))
-            .clamp(max_correction.neg(), S::ZERO);
-        if correction == S::ZERO {
-            continue;
-        }
-        let impulse = correction.neg().mul(c.effective_mass);
-        let push = c.normal.scale(impulse);
-        if c.inverse_mass_a.is_positive() {
-            displacements[ia] -= push.scale(c.inverse_mass_a);
-        }
-        if c.inverse_mass_b.is_positive() {
-            displacements[ib] += push.scale(c.inverse_mass_b);
-        }
+        solve_position_row(c, displacements, slop, beta, max_correction);
+    }
+}
+
+/// Position correction of one row (see [`solve_positions`]).
+#[inline]
+pub(crate) fn solve_position_row<S: Scalar>(
+    c: &ContactConstraint<S>,
+    displacements: &mut [Vec2<S>],
+    slop: S,
+    beta: S,
+    max_correction: S,
+) {
+    let (ia, ib) = (c.a as usize, c.b as usize);
+    let separation = c
+        .separation
+        .add((displacements[ib] - displacements[ia]).dot(c.normal));
+    // C ≤ 0 is the penetration beyond the slop, scaled and bounded.
+    let correction = beta
+        .mul(separation.add(slop))
+        .clamp(max_correction.neg(), S::ZERO);
+    if correction == S::ZERO {
+        return;
+    }
+    let impulse = correction.neg().mul(c.effective_mass);
+    let push = c.normal.scale(impulse);
+    if c.inverse_mass_a.is_positive() {
+        displacements[ia] -= push.scale(c.inverse_mass_a);
+    }
+    if c.inverse_mass_b.is_positive() {
+        displacements[ib] += push.scale(c.inverse_mass_b);
     }
 }

@@ -27,9 +27,9 @@
 //!   Near-tangent rays may be hit in `Fx` and missed in `f64` or the other
 //!   way round.
 
+use super::Circle;
 use super::ray::{Ray, RayHit, ray_hit_from_cast};
 use super::sweep::{cast_circle, circle_roots};
-use super::Circle;
 use crate::math::Scalar;
 
 /// Casts a ray against a solid circle: the first point within

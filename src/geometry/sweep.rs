@@ -69,43 +69,49 @@ fn fallback_normal<S: Scalar>(dir: Vec2<S>) -> Vec2<S> {
 /// the distance from the centre to the line). This form needs no squares
 /// of `b` or of `|m|`, which can reach 2³³ (beyond the narrow range, and
 /// whose rounding would be amplified), and it is well conditioned: `h` is
-/// formed exactly in the wide type and rounded once.
+/// formed exactly in the wide type and rounded once, and `a r²` is formed
+/// as `|r·dir|²` (two products rounded once each), not from `a` rounded to
+/// the narrow type, which would be off by `r²` ulps.
 ///
-/// Three refinements make the hit point accurate at any distance and for
-/// any radius:
+/// Two refinements make the hit point accurate at any distance and for any
+/// radius:
 ///
 /// 1. **Solve near the circle.** An error `δa` in `a` moves the foot of the
 ///    perpendicular `−b/a` by `|b|·δa`, up to 2¹⁷·2⁻³² = 2⁻¹⁵ for a far
 ///    circle. So the origin is first moved to (about) that foot,
 ///    `o' = origin + s_f·dir`, `s_f = −b/a`, and the quadratic is solved
-///    again from `o'`, where `|b'|` is tiny and the local roots `s'` are
-///    about `±r`. `o'` is an actual point (its rounding, ≤ 1 ulp per
-///    component, moves the line sideways by at most √2 ulp, which does not
-///    take the hit point off the circle), and the roots are `s = s_f + s'`.
-/// 2. **One Newton step on the exact residual.** `a` itself is rounded to
-///    the narrow type (the wide `dir·dir` is exact but cannot divide), and
-///    `s' ≈ r / √a` then carries an error of about `r·δa/2`: for `r = 2¹²`
-///    about 2¹¹ ulps. For the point `p₀ = o' + s'·dir`, the residual
-///    `e = |p₀ − c|² − r²` is exact in the wide type and `g = (p₀ − c)·dir`
-///    is the slope `½ de/ds`, so `s' − e / (2g)` is the Newton step for the
-///    exact equation. It is taken only when `4|e| < g²` (decided exactly):
-///    then the step is at most `|g| / 8` long, the quadratic's curvature
-///    (`a ≤ 2`) changes the slope by at most a quarter along it, and the
-///    step reduces the radial error at least sixfold — for any hit that is
-///    not grazing, to rounding. It is skipped (no division by a small or
-///    zero `g`) only for grazing rays with `|g| < √(4|e|)`, about
-///    `r·2⁻¹⁵` for `Fx`.
-/// 3. The quadratic is never formed with `|m|` or `b` squared, see above.
+///    again from `o'`, where `|b'|` is tiny and the local roots
+///    `s' = (−b' ∓ √disc)/a` are about `±r`. `o'` is an actual point (its
+///    rounding, ≤ 1 ulp per component, moves the line sideways by at most
+///    √2 ulp, which does not take the hit point off the circle), and the
+///    roots are `s = s_f + s'`.
+/// 2. **One Newton step on the exact residual.** The division by `a`
+///    (rounded to the narrow type: the wide `dir·dir` is exact but cannot
+///    divide) still puts `s'` off by `|s'|·δa ≤ r` ulps, a radial error of
+///    `(√disc/r)·r·δa ≤ √disc` ulps: up to `r` ulps head-on. For the point
+///    `p₀ = o' + s'·dir`, the radial residual `ρ = |p₀ − c| − r` is known
+///    to an ulp (the length is formed from the exact wide square), and
+///    `g = (p₀ − c)·dir` gives the slope `g / |p₀ − c|`, so
+///    `s' − ρ·|p₀ − c| / g` is the Newton step for the exact equation. It
+///    is taken only when `8|ρ|·|p₀ − c| < g²` (decided exactly): then the
+///    step is below `|g| / 8`, the curvature changes the slope by at most a
+///    quarter along it, and the step reduces the radial error at least
+///    sixfold — for any hit that is not grazing, to rounding. It is skipped
+///    (no division by a small or zero `g`) only for grazing rays,
+///    `|g| ≈ √disc < √(8|ρ| r)`; and there the error it would remove,
+///    `√disc` ulps, is itself below `√(8 r·r ulp)` ≈ `r·2⁻¹⁴·⁵` ulps.
 ///
 /// # Error (`Fx`)
 ///
-/// After the Newton step the hit point is within about 4 ulps (1e-9) of the
-/// circle: the step's own rounding (`e` narrowed, the division) is below
-/// one ulp of radial error, and forming the point rounds each component
-/// once. Without it (grazing rays only) the radial error is at most
-/// `(8 + r)` ulps. The parameter `s` is as ill-conditioned as the geometry:
-/// near a tangent (`√disc → 0`) it moves a lot for a tiny change in the
-/// input, while the point stays on the circle.
+/// The hit point is within about 4 ulps (1e-9) of the circle, for any hit
+/// at any distance (up to `r·2⁻¹⁴·⁵` ulps more for a grazing ray, below an
+/// ulp for `r < 2¹⁴`): `ρ` is known to an ulp, the Newton step's own
+/// rounding costs about one ulp of radial error, and forming the point
+/// rounds each component once. Hit-or-miss is decided on `disc`, whose
+/// error is under 3 ulps of line-to-centre distance, so a miss passes at
+/// least `r − 3` ulps from the centre. The parameter `s` is as
+/// ill-conditioned as the geometry: near a tangent (`√disc → 0`) it moves a
+/// lot for a tiny change in the input, while the point stays on the circle.
 struct LineCircle<S: Scalar> {
     /// `s_f`: the parameter of the foot point `o'`.
     foot: S,
@@ -144,17 +150,24 @@ impl<S: Scalar> LineCircle<S> {
         let local = num.div(self.a);
         let point = self.foot_point + dir.scale(local);
         let rel = point - center;
-        let e = rel.length_squared_wide().sub(radius.wide_mul(radius));
+        // Newton on f(s) = |rel(s)| − r: f' = g / len with g = rel·dir, so
+        // the step is −(len − r)·(len / g). `len` is rounded down by less
+        // than an ulp, so ρ = len − r is the radial error to an ulp, and
+        // forming ρ·(len/g) (|len/g| ≥ 1/|dir|) costs about one ulp of
+        // radial error whatever the radius (unlike narrowing |rel|² − r²,
+        // whose ulp would be divided by 2r).
+        let len = rel.length();
+        let rho = len.sub(radius.abs());
         let g = rel.dot(dir);
-        let e_abs = if e.is_negative() {
-            S::Wide::ZERO.sub(e)
-        } else {
-            e
-        };
-        let four_e = e_abs.add(e_abs).add(e_abs).add(e_abs);
-        if four_e < g.wide_mul(g) {
-            // |g| > 2√|e| ≥ 0, so g ≠ 0: the division is defined.
-            let step = e.narrow().neg().div(g.add(g));
+        // Guard, exact in the wide type: 8|ρ|·len < g², i.e. the step
+        // |ρ|·len/|g| is below |g|/8; f'' ≤ a/len ≤ 2/len changes the slope
+        // g/len by at most a quarter over it, so the step reduces the error
+        // at least sixfold (to rounding, for any hit that is not grazing).
+        // It also proves g ≠ 0 when ρ ≠ 0.
+        let guard = rho.abs().mul_int(8).wide_mul(len) < g.wide_mul(g);
+        if rho != S::ZERO && guard {
+            // g ≠ 0 (guard), so the division is defined.
+            let step = rho.mul(len.div(g)).neg();
             let local = local.add(step);
             let point = self.foot_point + dir.scale(local);
             return Root {
@@ -190,9 +203,13 @@ fn line_circle<S: Scalar>(
     let rel = foot_point - center;
     let b = rel.dot(dir);
     let h = rel.cross(dir);
-    // disc = a r² − h², exact in the wide type apart from the rounding of
-    // a·r (one ulp, times r).
-    let disc = a.mul(radius).wide_mul(radius).sub(h.wide_mul(h));
+    // disc = a r² − h², with a r² = |r·dir|²: the products r·dir are
+    // rounded once each (< 1 ulp), so disc is off by less than about
+    // 2√2·r ulps (plus 2|h| ulps from h), an error of under 3 ulps in the
+    // distance |h|/√a it is compared with. (Using the narrowed a instead
+    // would be off by r²·ulp.)
+    let rd = dir.scale(radius);
+    let disc = rd.length_squared_wide().sub(h.wide_mul(h));
     if disc.is_negative() {
         return None;
     }
@@ -482,10 +499,7 @@ pub(crate) fn cast_rounded_box<S: Scalar>(
     let half = half.abs();
     let radius = radius.abs();
     let q = (origin - center).abs();
-    let outside = Vec2::new(
-        q.x.sub(half.x).max(S::ZERO),
-        q.y.sub(half.y).max(S::ZERO),
-    );
+    let outside = Vec2::new(q.x.sub(half.x).max(S::ZERO), q.y.sub(half.y).max(S::ZERO));
     if outside.length_squared_wide() <= radius.wide_mul(radius) {
         return Cast::Inside;
     }

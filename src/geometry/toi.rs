@@ -136,7 +136,12 @@ fn toi_from_cast<S: Scalar>(d: Vec2<S>, cast: impl FnOnce(Vec2<S>, S) -> Cast<S>
 /// assert_eq!(toi_circle_circle(&a, Vec2::new(fx(-1.0), fx(0.0)), &b, Vec2::ZERO), Toi::Miss);
 /// ```
 #[must_use]
-pub fn toi_circle_circle<S: Scalar>(a: &Circle<S>, da: Vec2<S>, b: &Circle<S>, db: Vec2<S>) -> Toi<S> {
+pub fn toi_circle_circle<S: Scalar>(
+    a: &Circle<S>,
+    da: Vec2<S>,
+    b: &Circle<S>,
+    db: Vec2<S>,
+) -> Toi<S> {
     let radius = a.radius.abs().add(b.radius.abs());
     toi_from_cast(da - db, |dir, s_max| {
         cast_circle(a.center, dir, s_max, b.center, radius)

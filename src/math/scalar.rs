@@ -109,7 +109,8 @@ pub trait Scalar:
     /// Saturating division with a defined result for a zero divisor. For
     /// fixed point the exact quotient is truncated toward zero.
     fn div(self, rhs: Self) -> Self;
-    /// Division, or `None` for a zero divisor or an overflowing quotient.
+    /// Division, or `None` for a zero divisor or (fixed point) an
+    /// overflowing quotient.
     fn checked_div(self, rhs: Self) -> Option<Self>;
     /// Saturating negation (`MIN.neg()` is `MAX` for fixed point).
     fn neg(self) -> Self;

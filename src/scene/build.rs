@@ -5,8 +5,7 @@
 //! so the built world is the same on every machine.
 
 use super::{
-    Generator, Scene, SceneBody, SceneError, SceneKind, SceneMaterial, SceneShape,
-    MAX_SCENE_BODIES,
+    Generator, MAX_SCENE_BODIES, Scene, SceneBody, SceneError, SceneKind, SceneMaterial, SceneShape,
 };
 use crate::dynamics::BodyDef;
 use crate::geometry::Shape;
@@ -77,7 +76,9 @@ impl Generator {
                 let r = u64::from(rows);
                 r.saturating_mul(r.saturating_add(1)) / 2
             }
-            Generator::Grid { columns, rows, .. } => u64::from(columns).saturating_mul(u64::from(rows)),
+            Generator::Grid { columns, rows, .. } => {
+                u64::from(columns).saturating_mul(u64::from(rows))
+            }
             Generator::Walls { .. } => 4,
         }
     }
@@ -89,7 +90,9 @@ impl Scene {
     pub fn body_count(&self) -> u64 {
         self.generators
             .iter()
-            .fold(self.bodies.len() as u64, |n, g| n.saturating_add(g.body_count()))
+            .fold(self.bodies.len() as u64, |n, g| {
+                n.saturating_add(g.body_count())
+            })
     }
 
     /// The world settings the scene asks for.
@@ -121,8 +124,10 @@ impl Scene {
         if let Some(b) = o.bounds {
             s.bounds.half_extents = pair(b, &what)?;
         }
-        s.validate()
-            .map_err(|error| SceneError::World { what: "settings".to_owned(), error })?;
+        s.validate().map_err(|error| SceneError::World {
+            what: "settings".to_owned(),
+            error,
+        })?;
         Ok(s)
     }
 
@@ -135,8 +140,11 @@ impl Scene {
         if total > MAX_SCENE_BODIES {
             return Err(SceneError::TooManyBodies(total));
         }
-        let mut world = World::try_new(self.world_settings::<S>()?)
-            .map_err(|error| SceneError::World { what: "settings".to_owned(), error })?;
+        let mut world =
+            World::try_new(self.world_settings::<S>()?).map_err(|error| SceneError::World {
+                what: "settings".to_owned(),
+                error,
+            })?;
         for (i, body) in self.bodies.iter().enumerate() {
             let what = || format!("body {i}");
             add_scene_body(&mut world, body, &what)?;
@@ -144,7 +152,10 @@ impl Scene {
         for (g, generator) in self.generators.iter().enumerate() {
             let what = || format!("generator {g}");
             for def in generator.defs::<S>(&what)? {
-                world.add_body(def).map_err(|error| SceneError::World { what: what(), error })?;
+                world.add_body(def).map_err(|error| SceneError::World {
+                    what: what(),
+                    error,
+                })?;
             }
         }
         Ok(world)
@@ -162,7 +173,10 @@ fn add_scene_body<S: Scalar>(
     world
         .add_body(d)
         .map(|_| ())
-        .map_err(|error| SceneError::World { what: what(), error })
+        .map_err(|error| SceneError::World {
+            what: what(),
+            error,
+        })
 }
 
 impl Generator {
@@ -170,7 +184,13 @@ impl Generator {
     fn defs<S: Scalar>(&self, what: &dyn Fn() -> String) -> Result<Vec<BodyDef<S>>, SceneError> {
         let mut out = Vec::new();
         match *self {
-            Generator::Stack { count, half, base, gap, material } => {
+            Generator::Stack {
+                count,
+                half,
+                base,
+                gap,
+                material,
+            } => {
                 let half: Vec2<S> = pair(half, what)?;
                 let base: Vec2<S> = pair(base, what)?;
                 let gap: S = num(gap, what)?;
@@ -184,7 +204,13 @@ impl Generator {
                     );
                 }
             }
-            Generator::Pyramid { rows, half, spacing, base, material } => {
+            Generator::Pyramid {
+                rows,
+                half,
+                spacing,
+                base,
+                material,
+            } => {
                 let half: Vec2<S> = pair(half, what)?;
                 let base: Vec2<S> = pair(base, what)?;
                 let spacing: S = num(spacing, what)?;
@@ -204,7 +230,16 @@ impl Generator {
                     }
                 }
             }
-            Generator::Grid { columns, rows, shape: s, origin, spacing, speed, seed, material } => {
+            Generator::Grid {
+                columns,
+                rows,
+                shape: s,
+                origin,
+                spacing,
+                speed,
+                seed,
+                material,
+            } => {
                 let shape_s = shape::<S>(&s, what)?;
                 let origin: Vec2<S> = pair(origin, what)?;
                 let spacing: Vec2<S> = pair(spacing, what)?;
@@ -231,7 +266,12 @@ impl Generator {
                     }
                 }
             }
-            Generator::Walls { kind, center, half, thickness } => {
+            Generator::Walls {
+                kind,
+                center,
+                half,
+                thickness,
+            } => {
                 let c: Vec2<S> = pair(center, what)?;
                 let h: Vec2<S> = pair(half, what)?;
                 let t: S = num(thickness, what)?;

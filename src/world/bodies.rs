@@ -30,7 +30,8 @@ impl<S: Scalar> World<S> {
                 index
             }
             None => {
-                let index = u32::try_from(self.slots.len()).map_err(|_| WorldError::TooManyBodies)?;
+                let index =
+                    u32::try_from(self.slots.len()).map_err(|_| WorldError::TooManyBodies)?;
                 self.slots.push(Slot {
                     generation: 0,
                     body: Some(body),
@@ -53,6 +54,9 @@ impl<S: Scalar> World<S> {
         // Wake everything that touched it, then forget its contacts (the
         // slot may be reused by a new body, which must not inherit them).
         self.wake_neighbours(index_u32);
+        // Constraints attached to the body go with it (their bodies woken).
+        self.wake_constraint_partners(index_u32);
+        self.remove_constraints_of(index_u32);
         self.wake_index(index_u32);
         self.contacts
             .retain(|c| c.a != index_u32 && c.b != index_u32);

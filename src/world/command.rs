@@ -8,6 +8,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::Fx;
+use crate::constraints::{Constraint, ConstraintId};
 use crate::dynamics::{BodyDef, BodyId};
 use crate::math::{Scalar, Vec2};
 
@@ -52,6 +53,10 @@ pub enum Command<S: Scalar = Fx> {
     },
     /// Wakes a body and its island.
     Wake(BodyId),
+    /// Adds a constraint (waking the bodies it attaches).
+    AddConstraint(Constraint<S>),
+    /// Removes a constraint (waking the bodies it attached).
+    RemoveConstraint(ConstraintId),
 }
 
 /// What a successful command did.
@@ -59,6 +64,8 @@ pub enum Command<S: Scalar = Fx> {
 pub enum CommandOutcome {
     /// A body was added with this id.
     Spawned(BodyId),
+    /// A constraint was added with this id.
+    ConstraintAdded(ConstraintId),
     /// The command took effect.
     Applied,
 }

@@ -15,7 +15,10 @@ impl<S: Scalar> World<S> {
             Command::Despawn(id) => self.remove_body(id).map(|_| CommandOutcome::Applied),
             Command::ApplyImpulse { body, impulse } => {
                 let index = self.live_index(body)?;
-                let b = self.slots[index].body.as_ref().ok_or(WorldError::UnknownBody(body))?;
+                let b = self.slots[index]
+                    .body
+                    .as_ref()
+                    .ok_or(WorldError::UnknownBody(body))?;
                 if b.kind != BodyKind::Dynamic {
                     return Err(WorldError::NotDynamic(body));
                 }
@@ -31,7 +34,10 @@ impl<S: Scalar> World<S> {
             }
             Command::SetVelocity { body, velocity } => {
                 let index = self.live_index(body)?;
-                let b = self.slots[index].body.as_ref().ok_or(WorldError::UnknownBody(body))?;
+                let b = self.slots[index]
+                    .body
+                    .as_ref()
+                    .ok_or(WorldError::UnknownBody(body))?;
                 if b.kind == BodyKind::Fixed {
                     return Err(WorldError::FixedBody(body));
                 }
@@ -55,6 +61,12 @@ impl<S: Scalar> World<S> {
                 }
                 self.wake_index(index_u32);
                 Ok(CommandOutcome::Applied)
+            }
+            Command::AddConstraint(constraint) => self
+                .add_constraint(constraint)
+                .map(CommandOutcome::ConstraintAdded),
+            Command::RemoveConstraint(id) => {
+                self.remove_constraint(id).map(|_| CommandOutcome::Applied)
             }
             Command::Wake(body) => {
                 let index = self.live_index(body)?;

@@ -2,6 +2,7 @@
 
 use core::fmt;
 
+use crate::constraints::ConstraintId;
 use crate::dynamics::BodyId;
 
 /// Why the world refused an operation. On any error the world is unchanged.
@@ -35,6 +36,15 @@ pub enum WorldError {
     FixedBody(BodyId),
     /// The world holds the maximum number of bodies (2³¹).
     TooManyBodies,
+    /// An id that names no live constraint.
+    UnknownConstraint(ConstraintId),
+    /// A constraint whose parameters are out of range.
+    InvalidConstraint {
+        /// What is wrong and what the range is.
+        reason: &'static str,
+    },
+    /// The world holds the maximum number of constraints (2³¹).
+    TooManyConstraints,
     /// A settings field outside its documented range.
     InvalidSettings {
         /// The field.
@@ -51,7 +61,10 @@ impl fmt::Display for WorldError {
                 write!(f, "shape size must be positive (radius / half extents > 0)")
             }
             WorldError::ShapeTooLarge => {
-                write!(f, "shape too large: radius and half extents must be at most 4096")
+                write!(
+                    f,
+                    "shape too large: radius and half extents must be at most 4096"
+                )
             }
             WorldError::NonPositiveMass => write!(f, "density and mass must be positive"),
             WorldError::MassOutOfRange => write!(
@@ -72,6 +85,13 @@ impl fmt::Display for WorldError {
             WorldError::NotDynamic(id) => write!(f, "{id} is not a dynamic body"),
             WorldError::FixedBody(id) => write!(f, "{id} is a fixed body and cannot move"),
             WorldError::TooManyBodies => write!(f, "the world is full (2^31 bodies)"),
+            WorldError::UnknownConstraint(id) => {
+                write!(f, "{id} does not exist (never created, or removed)")
+            }
+            WorldError::InvalidConstraint { reason } => write!(f, "invalid constraint: {reason}"),
+            WorldError::TooManyConstraints => {
+                write!(f, "the world is full (2^31 constraints)")
+            }
             WorldError::InvalidSettings { field, reason } => {
                 write!(f, "invalid world setting {field}: {reason}")
             }

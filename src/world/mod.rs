@@ -2,12 +2,15 @@
 
 mod bodies;
 mod command;
+mod constraints_api;
 mod commands_apply;
 mod error;
 mod events;
 mod queries;
 mod settings;
 mod step;
+mod validate;
+mod step_constraints;
 
 use std::collections::BTreeMap;
 
@@ -21,6 +24,7 @@ pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
 
 use crate::Fx;
 use crate::collision::{CachedContact, StepScratch};
+use crate::constraints::ConstraintSlot;
 use crate::dynamics::{Body, BodyId};
 use crate::math::Scalar;
 
@@ -51,7 +55,8 @@ pub(crate) struct Slot<S: Scalar> {
 /// let p = world.body(ball).unwrap().position();
 /// assert!((p.y.to_f64() - 0.25).abs() < 0.01); // resting on the ground
 /// ```
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(bound = "")]
 pub struct World<S: Scalar = Fx> {
     pub(crate) settings: WorldSettings<S>,
     pub(crate) tick: u64,
@@ -64,10 +69,15 @@ pub struct World<S: Scalar = Fx> {
     /// Sleeping islands: key (smallest slot index of the island when it fell
     /// asleep) → member slot indices, ascending.
     pub(crate) sleeping_islands: BTreeMap<u32, Vec<u32>>,
+    /// Constraint table (springs and ropes), like the body table.
+    pub(crate) constraint_slots: Vec<ConstraintSlot<S>>,
+    /// Freed constraint slot indices; the last one is reused first.
+    pub(crate) constraint_free_list: Vec<u32>,
     /// Events of the last step.
     pub(crate) events: Vec<Event>,
     /// Working buffers reused every step (no allocation in steady state);
-    /// derived data, not part of the state.
+    /// derived data, not part of the state (never serialised).
+    #[serde(skip)]
     pub(crate) scratch: StepScratch<S>,
 }
 
@@ -102,6 +112,8 @@ impl<S: Scalar> World<S> {
             free_list: Vec::new(),
             contacts: Vec::new(),
             sleeping_islands: BTreeMap::new(),
+            constraint_slots: Vec::new(),
+            constraint_free_list: Vec::new(),
             events: Vec::new(),
             scratch: StepScratch::default(),
         }

@@ -78,7 +78,12 @@ impl<S: Scalar> World<S> {
     /// assert_eq!(hit.hit.distance, fx(9.5));
     /// ```
     #[must_use]
-    pub fn raycast(&self, origin: Vec2<S>, direction: Vec2<S>, max_distance: S) -> Option<BodyRayHit<S>> {
+    pub fn raycast(
+        &self,
+        origin: Vec2<S>,
+        direction: Vec2<S>,
+        max_distance: S,
+    ) -> Option<BodyRayHit<S>> {
         self.raycast_filtered(origin, direction, max_distance, &QueryFilter::default())
     }
 

@@ -6,12 +6,18 @@
 //! sleep → events.
 
 use super::{Command, CommandOutcome, Event, World, WorldError};
-use crate::collision::{CachedContact, Proxy, ProxyClass, find_pairs, contact_between, shape_toi};
+use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
 use crate::dynamics::contact_solver::{
     ContactConstraint, solve_positions, solve_velocities, warm_start,
 };
 use crate::dynamics::{BodyId, BodyKind, NO_ISLAND, islands};
+use crate::collision::StepScratch;
+use crate::constraints::rope_block::{
+    MAX_BLOCK, group_rows, solve_group_positions, solve_group_velocities,
+};
+use crate::dynamics::contact_solver::{solve_position_row, solve_velocity_row};
 use crate::geometry::Toi;
+use super::WorldSettings;
 use crate::math::{Scalar, Vec2};
 
 impl<S: Scalar> World<S> {
@@ -29,6 +35,7 @@ impl<S: Scalar> World<S> {
     ) -> Vec<Result<CommandOutcome, WorldError>> {
         self.events.clear();
         let results = commands.iter().map(|c| self.apply(c.clone())).collect();
+        self.wake_across_constraints();
         let previous_touching: Vec<(u32, u32)> = self
             .contacts
             .iter()
@@ -57,6 +64,7 @@ impl<S: Scalar> World<S> {
         // Each pass wakes at least one island, so this ends.
         loop {
             self.load_scratch(h);
+            self.apply_springs(h);
             self.build_proxies(h);
             find_pairs(&mut self.scratch.proxies, &mut self.scratch.pairs);
             let to_wake = self.build_constraints(h, inverse_h);
@@ -67,15 +75,20 @@ impl<S: Scalar> World<S> {
                 self.wake_index(index);
             }
         }
+        self.build_rope_rows(h, inverse_h);
         let scratch = &mut self.scratch;
+        group_rows(&scratch.rope_rows, &mut scratch.rope_groups);
+        warm_start(&scratch.rope_rows, &mut scratch.velocities);
         warm_start(&scratch.constraints, &mut scratch.velocities);
         for _ in 0..self.settings.velocity_iterations {
+            solve_rope_velocities(scratch);
             solve_velocities(&mut scratch.constraints, &mut scratch.velocities);
         }
         self.integrate(h);
         let settings = &self.settings;
         let scratch = &mut self.scratch;
         for _ in 0..settings.position_iterations {
+            solve_rope_positions(scratch, settings);
             solve_positions(
                 &scratch.constraints,
                 &mut scratch.displacements,
@@ -86,11 +99,13 @@ impl<S: Scalar> World<S> {
         }
         self.write_back();
         self.update_contact_cache();
+        self.store_rope_impulses();
     }
 
     /// Velocities (with gravity) and solver inverse masses for every slot.
     fn load_scratch(&mut self, h: S) {
-        let n = self.slots.len();
+        // One extra slot at the end: the virtual ground of point anchors.
+        let n = self.slots.len() + 1;
         let scratch = &mut self.scratch;
         scratch.velocities.clear();
         scratch.velocities.resize(n, Vec2::ZERO);
@@ -133,7 +148,9 @@ impl<S: Scalar> World<S> {
             };
             let now = body.aabb();
             let swept = if matches!(class, ProxyClass::Dynamic | ProxyClass::MovingKinematic) {
-                let later = body.shape.bounding_aabb_at(body.position + velocity.scale(h));
+                let later = body
+                    .shape
+                    .bounding_aabb_at(body.position + velocity.scale(h));
                 now.union(&later).expanded(margin)
             } else {
                 now
@@ -167,12 +184,22 @@ impl<S: Scalar> World<S> {
             ) else {
                 continue;
             };
-            let contact = contact_between(&body_a.shape, body_a.position, &body_b.shape, body_b.position);
-            let (va, vb) = (scratch.velocities[a as usize], scratch.velocities[b as usize]);
+            let contact = contact_between(
+                &body_a.shape,
+                body_a.position,
+                &body_b.shape,
+                body_b.position,
+            );
+            let (va, vb) = (
+                scratch.velocities[a as usize],
+                scratch.velocities[b as usize],
+            );
             let vn = (vb - va).dot(contact.normal);
             // Keep the contact if the gap can close within this substep
             // (plus the margin): s ≤ margin + max(0, -v_n)·h.
-            let reach = settings.speculative_margin.add(vn.neg().max(S::ZERO).mul(h));
+            let reach = settings
+                .speculative_margin
+                .add(vn.neg().max(S::ZERO).mul(h));
             if contact.separation > reach {
                 continue;
             }
@@ -193,7 +220,10 @@ impl<S: Scalar> World<S> {
             if !to_wake.is_empty() {
                 continue;
             }
-            let (wa, wb) = (scratch.inverse_masses[a as usize], scratch.inverse_masses[b as usize]);
+            let (wa, wb) = (
+                scratch.inverse_masses[a as usize],
+                scratch.inverse_masses[b as usize],
+            );
             let sum = wa.add(wb);
             if !sum.is_positive() {
                 continue;
@@ -227,7 +257,13 @@ impl<S: Scalar> World<S> {
                 normal_impulse,
                 tangent_impulse,
             };
-            constraint.prepare_target(vn, restitution, settings.restitution_threshold, h, inverse_h);
+            constraint.prepare_target(
+                vn,
+                restitution,
+                settings.restitution_threshold,
+                h,
+                inverse_h,
+            );
             scratch.constraints.push(constraint);
         }
         to_wake.sort_unstable();
@@ -242,7 +278,10 @@ impl<S: Scalar> World<S> {
         for (i, slot) in self.slots.iter().enumerate() {
             let Some(body) = &slot.body else { continue };
             if body.is_moving() {
-                scratch.displacements[i] = scratch.velocities[i].scale(h);
+                // x' = x + h·v' − h·Δv_spring/2: springs get the trapezoidal
+                // position rule (see crate::constraints).
+                let spring_half = scratch.spring_dv[i].scale(h).scale(S::ONE.half());
+                scratch.displacements[i] = scratch.velocities[i].scale(h) - spring_half;
             }
         }
         for &(a, b) in &scratch.pairs {
@@ -258,9 +297,14 @@ impl<S: Scalar> World<S> {
                 }
                 let full = scratch.velocities[bullet as usize].scale(h);
                 let other_motion = scratch.displacements[other as usize];
-                if let Toi::Hit { t, .. } =
-                    shape_toi(&bb.shape, bb.position, full, &ob.shape, ob.position, other_motion)
-                {
+                if let Toi::Hit { t, .. } = shape_toi(
+                    &bb.shape,
+                    bb.position,
+                    full,
+                    &ob.shape,
+                    ob.position,
+                    other_motion,
+                ) {
                     let cut = full.scale(t);
                     // Keep the shortest cut over all partners.
                     let current = scratch.displacements[bullet as usize];
@@ -278,7 +322,9 @@ impl<S: Scalar> World<S> {
         let bounds = self.settings.bounds;
         let (lo, hi) = (bounds.min(), bounds.max());
         for (i, slot) in self.slots.iter_mut().enumerate() {
-            let Some(body) = slot.body.as_mut() else { continue };
+            let Some(body) = slot.body.as_mut() else {
+                continue;
+            };
             if !body.is_moving() {
                 continue;
             }
@@ -341,9 +387,13 @@ impl<S: Scalar> World<S> {
         if !settings.sleep_enabled {
             return;
         }
-        let threshold_sq = settings.sleep_linear_threshold.wide_mul(settings.sleep_linear_threshold);
+        let threshold_sq = settings
+            .sleep_linear_threshold
+            .wide_mul(settings.sleep_linear_threshold);
         for slot in &mut self.slots {
-            let Some(body) = slot.body.as_mut() else { continue };
+            let Some(body) = slot.body.as_mut() else {
+                continue;
+            };
             if !body.is_simulated_dynamic() {
                 continue;
             }
@@ -371,6 +421,22 @@ impl<S: Scalar> World<S> {
                 islands::union(parents, c.a, c.b);
             }
         }
+        // Constraints join islands like touching contacts.
+        for entry in self.constraint_slots.iter().filter_map(|s| s.entry.as_ref()) {
+            let (a, b) = entry.constraint.anchors();
+            let (Some(ia), Some(ib)) = (a.body(), b.body()) else {
+                continue;
+            };
+            let both = [ia, ib].iter().all(|id| {
+                self.slots
+                    .get(id.index() as usize)
+                    .and_then(|s| s.body.as_ref())
+                    .is_some_and(|b| b.is_simulated_dynamic())
+            });
+            if both {
+                islands::union(parents, ia.index(), ib.index());
+            }
+        }
         // A body touched by a moving kinematic body may not sleep.
         for c in &self.contacts {
             for (me, other) in [(c.a, c.b), (c.b, c.a)] {
@@ -378,9 +444,7 @@ impl<S: Scalar> World<S> {
                     .body
                     .as_ref()
                     .is_some_and(|o| o.kind == BodyKind::Kinematic && o.velocity != Vec2::ZERO);
-                if moving_kinematic
-                    && let Some(body) = self.slots[me as usize].body.as_mut()
-                {
+                if moving_kinematic && let Some(body) = self.slots[me as usize].body.as_mut() {
                     body.sleep_time = S::ZERO;
                 }
             }
@@ -388,7 +452,9 @@ impl<S: Scalar> World<S> {
         // The island's readiness is its least-rested member.
         let mut island_time: Vec<S> = vec![S::MAX; n];
         for i in 0..n {
-            let Some(body) = self.slots[i].body.as_ref() else { continue };
+            let Some(body) = self.slots[i].body.as_ref() else {
+                continue;
+            };
             if !body.is_simulated_dynamic() {
                 continue;
             }
@@ -396,7 +462,9 @@ impl<S: Scalar> World<S> {
             island_time[root] = island_time[root].min(body.sleep_time);
         }
         for i in 0..n {
-            let Some(body) = self.slots[i].body.as_mut() else { continue };
+            let Some(body) = self.slots[i].body.as_mut() else {
+                continue;
+            };
             if !body.is_simulated_dynamic() {
                 continue;
             }
@@ -409,8 +477,10 @@ impl<S: Scalar> World<S> {
             body.velocity = Vec2::ZERO;
             body.island = root;
             self.sleeping_islands.entry(root).or_default().push(index);
-            self.events
-                .push(Event::Slept(BodyId::from_parts(index, self.slots[i].generation)));
+            self.events.push(Event::Slept(BodyId::from_parts(
+                index,
+                self.slots[i].generation,
+            )));
         }
         let _ = NO_ISLAND;
     }
@@ -432,19 +502,68 @@ impl<S: Scalar> World<S> {
                     j += 1;
                 }
                 (Some(&x), Some(&y)) if x < y => {
-                    self.events.push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
+                    self.events
+                        .push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
                     i += 1;
                 }
                 (Some(&x), None) => {
-                    self.events.push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
+                    self.events
+                        .push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
                     i += 1;
                 }
                 (_, Some(&y)) => {
-                    self.events.push(Event::ContactBegan(self.id_of(y.0), self.id_of(y.1)));
+                    self.events
+                        .push(Event::ContactBegan(self.id_of(y.0), self.id_of(y.1)));
                     j += 1;
                 }
                 (None, None) => break,
             }
+        }
+    }
+}
+
+/// One velocity pass over the rope rows: chains exactly, single ropes and
+/// oversized groups by sequential impulses.
+fn solve_rope_velocities<S: Scalar>(scratch: &mut StepScratch<S>) {
+    let StepScratch {
+        rope_rows,
+        rope_groups,
+        velocities,
+        rope_block,
+        ..
+    } = scratch;
+    for group in rope_groups.iter() {
+        if group.len() == 1 || group.len() > MAX_BLOCK {
+            for &ri in group {
+                solve_velocity_row(&mut rope_rows[ri], velocities);
+            }
+        } else {
+            solve_group_velocities(rope_rows, group, velocities, rope_block);
+        }
+    }
+}
+
+/// One position pass over the rope rows (same split as the velocities).
+fn solve_rope_positions<S: Scalar>(scratch: &mut StepScratch<S>, settings: &WorldSettings<S>) {
+    let StepScratch {
+        rope_rows,
+        rope_groups,
+        displacements,
+        rope_block,
+        ..
+    } = scratch;
+    let (slop, beta, max) = (
+        settings.linear_slop,
+        settings.position_correction,
+        settings.max_correction,
+    );
+    for group in rope_groups.iter() {
+        if group.len() == 1 || group.len() > MAX_BLOCK {
+            for &ri in group {
+                solve_position_row(&rope_rows[ri], displacements, slop, beta, max);
+            }
+        } else {
+            solve_group_positions(rope_rows, group, displacements, slop, beta, max, rope_block);
         }
     }
 }

@@ -52,6 +52,7 @@ pub fn add_pyramid(world: &mut World, rows: usize, spacing: f64) -> Vec<(BodyId,
 }
 
 /// A tiny deterministic PRNG (SplitMix64), so test scenes need no crate.
+#[derive(Clone, Debug)]
 pub struct Rng(pub u64);
 
 impl Rng {

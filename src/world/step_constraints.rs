@@ -1,0 +1,218 @@
+//! The constraint phases of a substep: springs (forces → velocities) and
+//! rope rows (solved with the contacts). Maths in [`crate::constraints`].
+//!
+//! Point anchors use a virtual "ground" slot at index `n` (one past the last
+//! body) with zero velocity and zero inverse mass, so rope rows share the
+//! contact solver's indexing without special cases.
+
+use super::World;
+use crate::constraints::{Anchor, Constraint};
+use crate::constraints::spring::trapezoidal_impulse;
+use crate::dynamics::contact_solver::ContactConstraint;
+use crate::math::{Scalar, Vec2};
+
+/// Where an anchor is this substep, how it moves, and which solver slot
+/// carries its velocity.
+#[derive(Clone, Copy)]
+struct AnchorState<S: Scalar> {
+    position: Vec2<S>,
+    velocity: Vec2<S>,
+    inverse_mass: S,
+    slot: u32,
+}
+
+impl<S: Scalar> World<S> {
+    /// Index of the virtual ground slot used by point anchors.
+    pub(crate) fn ground_slot(&self) -> u32 {
+        u32::try_from(self.slots.len()).unwrap_or(u32::MAX)
+    }
+
+    fn anchor_state(&self, anchor: &Anchor<S>) -> Option<AnchorState<S>> {
+        match *anchor {
+            Anchor::Point(p) => Some(AnchorState {
+                position: p,
+                velocity: Vec2::ZERO,
+                inverse_mass: S::ZERO,
+                slot: self.ground_slot(),
+            }),
+            Anchor::Body(id) | Anchor::BodyOffset(id, _) => {
+                let index = self.live_index(id).ok()?;
+                let body = self.slots[index].body.as_ref()?;
+                Some(AnchorState {
+                    position: body.position + anchor.local_point(),
+                    velocity: *self.scratch.velocities.get(index)?,
+                    inverse_mass: *self.scratch.inverse_masses.get(index)?,
+                    slot: id.index(),
+                })
+            }
+        }
+    }
+
+    /// Wakes a sleeping body joined by a constraint to an awake one, so a
+    /// constraint never pulls against a frozen sleeper.
+    pub(crate) fn wake_across_constraints(&mut self) {
+        let mut to_wake = Vec::new();
+        for entry in self.constraint_slots.iter().filter_map(|s| s.entry.as_ref()) {
+            let (a, b) = entry.constraint.anchors();
+            let (Some(ia), Some(ib)) = (a.body(), b.body()) else {
+                continue;
+            };
+            let (Some(ba), Some(bb)) = (self.body(ia), self.body(ib)) else {
+                continue;
+            };
+            if ba.is_moving() && !bb.awake {
+                to_wake.push(ib.index());
+            }
+            if bb.is_moving() && !ba.awake {
+                to_wake.push(ia.index());
+            }
+        }
+        for index in to_wake {
+            self.wake_index(index);
+        }
+    }
+
+    /// Springs: trapezoidal impulses on the substep velocities.
+    pub(crate) fn apply_springs(&mut self, h: S) {
+        let n = self.slots.len();
+        self.scratch.spring_dv.clear();
+        self.scratch.spring_dv.resize(n + 1, Vec2::ZERO);
+        for ci in 0..self.constraint_slots.len() {
+            let Some(constraint) = self.constraint_slots[ci].entry.as_ref().map(|e| e.constraint)
+            else {
+                continue;
+            };
+            let (a, b) = constraint.anchors();
+            let (Some(sa), Some(sb)) = (self.anchor_state(&a), self.anchor_state(&b)) else {
+                continue;
+            };
+            let w = sa.inverse_mass.add(sb.inverse_mass);
+            if !w.is_positive() {
+                continue;
+            }
+            let relative_velocity = sb.velocity - sa.velocity;
+            // λ per unit of inverse mass: the impulse on b (−λ on a).
+            let impulse = match constraint {
+                Constraint::BendySpring {
+                    rest_offset,
+                    stiffness,
+                    damping,
+                    ..
+                } => {
+                    let stretch = sb.position - sa.position - rest_offset;
+                    Vec2::new(
+                        trapezoidal_impulse(stretch.x, relative_velocity.x, w, stiffness.x, damping, h),
+                        trapezoidal_impulse(stretch.y, relative_velocity.y, w, stiffness.y, damping, h),
+                    )
+                }
+                Constraint::RadialSpring {
+                    rest_length,
+                    stiffness,
+                    damping,
+                    ..
+                } => {
+                    // A body exactly at the pivot is pushed along +Y (the
+                    // geometry module's convention for coincident points).
+                    let (axis, length) = (sb.position - sa.position)
+                        .try_normalize_with_length()
+                        .unwrap_or((Vec2::Y, S::ZERO));
+                    let stretch = length.sub(rest_length);
+                    let v = relative_velocity.dot(axis);
+                    axis.scale(trapezoidal_impulse(stretch, v, w, stiffness, damping, h))
+                }
+                Constraint::Rope { .. } => continue,
+            };
+            let scratch = &mut self.scratch;
+            for (state, sign_b) in [(sa, false), (sb, true)] {
+                if !state.inverse_mass.is_positive() {
+                    continue;
+                }
+                let dv = impulse.scale(state.inverse_mass);
+                let dv = if sign_b { dv } else { -dv };
+                let i = state.slot as usize;
+                scratch.velocities[i] += dv;
+                scratch.spring_dv[i] += dv;
+            }
+        }
+    }
+
+    /// Rope rows for this substep: a rope is active when it is taut or can
+    /// become taut within the substep (plus the speculative margin).
+    pub(crate) fn build_rope_rows(&mut self, h: S, inverse_h: S) {
+        self.scratch.rope_rows.clear();
+        self.scratch.rope_slots.clear();
+        let margin = self.settings.speculative_margin;
+        let threshold = self.settings.restitution_threshold;
+        for ci in 0..self.constraint_slots.len() {
+            let Some(entry) = self.constraint_slots[ci].entry.as_ref() else {
+                continue;
+            };
+            let Constraint::Rope {
+                a,
+                b,
+                max_length,
+                restitution,
+            } = entry.constraint
+            else {
+                continue;
+            };
+            let warm = entry.impulse;
+            let (Some(sa), Some(sb)) = (self.anchor_state(&a), self.anchor_state(&b)) else {
+                continue;
+            };
+            let w = sa.inverse_mass.add(sb.inverse_mass);
+            if !w.is_positive() {
+                continue;
+            }
+            let (direction, length) = (sb.position - sa.position)
+                .try_normalize_with_length()
+                .unwrap_or((Vec2::Y, S::ZERO));
+            // The row's "normal" points from b back to a, so that the
+            // contact rule v ≥ -s/h with s = slack reads v_n ≤ s/h.
+            let normal = -direction;
+            let slack = max_length.sub(length);
+            let vn = (sb.velocity - sa.velocity).dot(normal);
+            let reach = margin.add(vn.neg().max(S::ZERO).mul(h));
+            if slack > reach {
+                continue;
+            }
+            let mut row = ContactConstraint {
+                a: sa.slot,
+                b: sb.slot,
+                normal,
+                separation: slack,
+                inverse_mass_a: sa.inverse_mass,
+                inverse_mass_b: sb.inverse_mass,
+                effective_mass: S::ONE.div(w),
+                friction: S::ZERO,
+                target_velocity: S::ZERO,
+                normal_impulse: warm,
+                tangent_impulse: S::ZERO,
+            };
+            row.prepare_target(vn, restitution, threshold, h, inverse_h);
+            self.scratch.rope_rows.push(row);
+            self.scratch
+                .rope_slots
+                .push(u32::try_from(ci).unwrap_or(u32::MAX));
+        }
+    }
+
+    /// Stores the ropes' accumulated impulses for warm starting (zero for
+    /// ropes that were slack this substep).
+    pub(crate) fn store_rope_impulses(&mut self) {
+        for slot in &mut self.constraint_slots {
+            if let Some(entry) = slot.entry.as_mut() {
+                entry.impulse = S::ZERO;
+            }
+        }
+        for (row, &ci) in self.scratch.rope_rows.iter().zip(&self.scratch.rope_slots) {
+            if let Some(entry) = self
+                .constraint_slots
+                .get_mut(ci as usize)
+                .and_then(|s| s.entry.as_mut())
+            {
+                entry.impulse = row.normal_impulse;
+            }
+        }
+    }
+}
