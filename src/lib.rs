@@ -17,10 +17,12 @@
 
 mod collision;
 pub mod constraints;
+pub mod diff;
 pub mod dynamics;
 pub mod geometry;
 pub mod hash;
 pub mod math;
+pub mod replay;
 pub mod scene;
 pub mod snapshot;
 pub mod world;

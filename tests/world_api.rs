@@ -35,21 +35,81 @@ fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() 
     let circle = |r: f64| Shape::circle(fx(r));
     let aabb = |x: f64, y: f64| Shape::aabb(v(x, y));
     let cases: Vec<(&str, BodyDef, WorldError)> = vec![
-        ("zero radius", dynamic(circle(0.0)), WorldError::NonPositiveSize),
-        ("negative radius", dynamic(circle(-0.5)), WorldError::NonPositiveSize),
-        ("most negative radius", dynamic(Shape::circle(Fx::MIN)), WorldError::NonPositiveSize),
-        ("zero half width", dynamic(aabb(0.0, 1.0)), WorldError::NonPositiveSize),
-        ("zero half height", dynamic(aabb(1.0, 0.0)), WorldError::NonPositiveSize),
-        ("negative half width", dynamic(aabb(-1.0, 1.0)), WorldError::NonPositiveSize),
-        ("negative half height", dynamic(aabb(1.0, -1e-9)), WorldError::NonPositiveSize),
-        ("fixed, zero radius", BodyDef::fixed(circle(0.0)), WorldError::NonPositiveSize),
-        ("kinematic, zero extent", BodyDef::kinematic(aabb(0.0, 0.0)), WorldError::NonPositiveSize),
-        ("zero density", dynamic(circle(0.5)).density(fx(0.0)), WorldError::NonPositiveMass),
-        ("negative density", dynamic(circle(0.5)).density(fx(-1.0)), WorldError::NonPositiveMass),
-        ("zero mass", dynamic(aabb(0.5, 0.5)).mass(fx(0.0)), WorldError::NonPositiveMass),
-        ("negative mass", dynamic(aabb(0.5, 0.5)).mass(fx(-2.0)), WorldError::NonPositiveMass),
-        ("x beyond +bounds", dynamic(circle(0.5)).position(v(40_000.0, 0.0)), WorldError::OutOfBounds),
-        ("y beyond -bounds", dynamic(circle(0.5)).position(v(0.0, -33_000.0)), WorldError::OutOfBounds),
+        (
+            "zero radius",
+            dynamic(circle(0.0)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "negative radius",
+            dynamic(circle(-0.5)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "most negative radius",
+            dynamic(Shape::circle(Fx::MIN)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "zero half width",
+            dynamic(aabb(0.0, 1.0)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "zero half height",
+            dynamic(aabb(1.0, 0.0)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "negative half width",
+            dynamic(aabb(-1.0, 1.0)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "negative half height",
+            dynamic(aabb(1.0, -1e-9)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "fixed, zero radius",
+            BodyDef::fixed(circle(0.0)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "kinematic, zero extent",
+            BodyDef::kinematic(aabb(0.0, 0.0)),
+            WorldError::NonPositiveSize,
+        ),
+        (
+            "zero density",
+            dynamic(circle(0.5)).density(fx(0.0)),
+            WorldError::NonPositiveMass,
+        ),
+        (
+            "negative density",
+            dynamic(circle(0.5)).density(fx(-1.0)),
+            WorldError::NonPositiveMass,
+        ),
+        (
+            "zero mass",
+            dynamic(aabb(0.5, 0.5)).mass(fx(0.0)),
+            WorldError::NonPositiveMass,
+        ),
+        (
+            "negative mass",
+            dynamic(aabb(0.5, 0.5)).mass(fx(-2.0)),
+            WorldError::NonPositiveMass,
+        ),
+        (
+            "x beyond +bounds",
+            dynamic(circle(0.5)).position(v(40_000.0, 0.0)),
+            WorldError::OutOfBounds,
+        ),
+        (
+            "y beyond -bounds",
+            dynamic(circle(0.5)).position(v(0.0, -33_000.0)),
+            WorldError::OutOfBounds,
+        ),
         (
             "fixed beyond bounds",
             BodyDef::fixed(aabb(1.0, 1.0)).position(v(-32_769.0, 0.0)),
@@ -64,8 +124,16 @@ fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() 
         assert_eq!(world.state_hash(), hash, "{name}: the world changed");
         assert_eq!(world.body_count(), count, "{name}: the body count changed");
         // The same definition as a command is refused the same way.
-        assert_eq!(world.apply(Command::Spawn(def)), Err(expected), "{name} (command)");
-        assert_eq!(world.state_hash(), hash, "{name}: the world changed (command)");
+        assert_eq!(
+            world.apply(Command::Spawn(def)),
+            Err(expected),
+            "{name} (command)"
+        );
+        assert_eq!(
+            world.state_hash(),
+            hash,
+            "{name}: the world changed (command)"
+        );
     }
     // No id was consumed: the next body gets the id it would have got, and
     // both worlds continue identically.
@@ -81,11 +149,16 @@ fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() 
 
 #[test]
 fn positions_at_the_bounds_are_accepted_and_just_beyond_refused() {
-    let mut settings = WorldSettings::default();
-    settings.bounds = Aabb::new(v(0.0, 0.0), v(100.0, 50.0));
+    let settings = WorldSettings {
+        bounds: Aabb::new(v(0.0, 0.0), v(100.0, 50.0)),
+        ..WorldSettings::default()
+    };
     let mut world: World = World::new(settings);
     let def = |x, y| BodyDef::fixed(Shape::circle(fx(0.5))).position(v(x, y));
-    assert!(world.add_body(def(100.0, -50.0)).is_ok(), "the boundary is inside");
+    assert!(
+        world.add_body(def(100.0, -50.0)).is_ok(),
+        "the boundary is inside"
+    );
     let hash = world.state_hash();
     let just_beyond = Fx::from_num(100) + Fx::DELTA;
     let beyond = BodyDef::fixed(Shape::circle(fx(0.5))).position(Vec2::new(just_beyond, Fx::ZERO));
@@ -100,9 +173,18 @@ fn positions_at_the_bounds_are_accepted_and_just_beyond_refused() {
 fn every_command(id: BodyId) -> Vec<Command> {
     vec![
         Command::Despawn(id),
-        Command::ApplyImpulse { body: id, impulse: v(1.0, 0.0) },
-        Command::SetVelocity { body: id, velocity: v(0.0, 1.0) },
-        Command::SetPosition { body: id, position: v(0.0, 3.0) },
+        Command::ApplyImpulse {
+            body: id,
+            impulse: v(1.0, 0.0),
+        },
+        Command::SetVelocity {
+            body: id,
+            velocity: v(0.0, 1.0),
+        },
+        Command::SetPosition {
+            body: id,
+            position: v(0.0, 3.0),
+        },
         Command::Wake(id),
     ]
 }
@@ -110,15 +192,27 @@ fn every_command(id: BodyId) -> Vec<Command> {
 fn assert_refused_everywhere(world: &mut World, id: BodyId, what: &str) {
     let hash = world.state_hash();
     assert!(world.body(id).is_none(), "{what}: body() found it");
-    assert_eq!(world.remove_body(id).err(), Some(WorldError::UnknownBody(id)), "{what}: remove_body");
-    assert_eq!(world.state_hash(), hash, "{what}: remove_body changed the world");
+    assert_eq!(
+        world.remove_body(id).err(),
+        Some(WorldError::UnknownBody(id)),
+        "{what}: remove_body"
+    );
+    assert_eq!(
+        world.state_hash(),
+        hash,
+        "{what}: remove_body changed the world"
+    );
     for command in every_command(id) {
         assert_eq!(
             world.apply(command.clone()),
             Err(WorldError::UnknownBody(id)),
             "{what}: {command:?}"
         );
-        assert_eq!(world.state_hash(), hash, "{what}: {command:?} changed the world");
+        assert_eq!(
+            world.state_hash(),
+            hash,
+            "{what}: {command:?} changed the world"
+        );
     }
 }
 
@@ -144,10 +238,18 @@ fn stale_and_unknown_ids_are_refused_by_remove_body_and_every_command() {
     assert!(world.body(newcomer).is_some());
 
     // Ids that were never issued.
-    assert_refused_everywhere(&mut world, BodyId::from_parts(12_345, 0), "never-issued index");
+    assert_refused_everywhere(
+        &mut world,
+        BodyId::from_parts(12_345, 0),
+        "never-issued index",
+    );
     let future = BodyId::from_parts(newcomer.index(), newcomer.generation() + 5);
     assert_refused_everywhere(&mut world, future, "future generation");
-    assert_refused_everywhere(&mut world, BodyId::from_parts(u32::MAX, u32::MAX), "u32::MAX");
+    assert_refused_everywhere(
+        &mut world,
+        BodyId::from_parts(u32::MAX, u32::MAX),
+        "u32::MAX",
+    );
 
     // Inside step_with: each refused command reports UnknownBody, and the
     // tick is exactly the tick without them.
@@ -169,12 +271,48 @@ fn commands_of_the_wrong_kind_are_refused_and_change_nothing() {
     world.step();
     let hash = world.state_hash();
     let cases = [
-        (Command::ApplyImpulse { body: ground, impulse: v(1.0, 0.0) }, WorldError::NotDynamic(ground)),
-        (Command::ApplyImpulse { body: platform, impulse: v(1.0, 0.0) }, WorldError::NotDynamic(platform)),
-        (Command::SetVelocity { body: ground, velocity: v(1.0, 0.0) }, WorldError::FixedBody(ground)),
-        (Command::SetVelocity { body: ball, velocity: v(5000.0, 0.0) }, WorldError::SpeedTooLarge),
-        (Command::ApplyImpulse { body: platform, impulse: v(1e9, 0.0) }, WorldError::NotDynamic(platform)),
-        (Command::SetPosition { body: ball, position: v(0.0, 40_000.0) }, WorldError::OutOfBounds),
+        (
+            Command::ApplyImpulse {
+                body: ground,
+                impulse: v(1.0, 0.0),
+            },
+            WorldError::NotDynamic(ground),
+        ),
+        (
+            Command::ApplyImpulse {
+                body: platform,
+                impulse: v(1.0, 0.0),
+            },
+            WorldError::NotDynamic(platform),
+        ),
+        (
+            Command::SetVelocity {
+                body: ground,
+                velocity: v(1.0, 0.0),
+            },
+            WorldError::FixedBody(ground),
+        ),
+        (
+            Command::SetVelocity {
+                body: ball,
+                velocity: v(5000.0, 0.0),
+            },
+            WorldError::SpeedTooLarge,
+        ),
+        (
+            Command::ApplyImpulse {
+                body: platform,
+                impulse: v(1e9, 0.0),
+            },
+            WorldError::NotDynamic(platform),
+        ),
+        (
+            Command::SetPosition {
+                body: ball,
+                position: v(0.0, 40_000.0),
+            },
+            WorldError::OutOfBounds,
+        ),
     ];
     for (command, expected) in cases {
         assert_eq!(world.apply(command.clone()), Err(expected), "{command:?}");
@@ -224,21 +362,23 @@ fn any_def() -> impl Strategy<Value = BodyDef> {
         (any::<bool>(), any_scalar()),
         (any_scalar(), any_scalar(), any_scalar(), any::<bool>()),
     )
-        .prop_map(|(kind, shape, position, velocity, (by_mass, m), (e, mu, g, bullet))| {
-            let def = match kind {
-                0 => BodyDef::fixed(shape),
-                1 => BodyDef::kinematic(shape),
-                _ => BodyDef::dynamic(shape),
-            };
-            let def = def
-                .position(position)
-                .velocity(velocity)
-                .restitution(e)
-                .friction(mu)
-                .gravity_scale(g)
-                .bullet(bullet);
-            if by_mass { def.mass(m) } else { def.density(m) }
-        })
+        .prop_map(
+            |(kind, shape, position, velocity, (by_mass, m), (e, mu, g, bullet))| {
+                let def = match kind {
+                    0 => BodyDef::fixed(shape),
+                    1 => BodyDef::kinematic(shape),
+                    _ => BodyDef::dynamic(shape),
+                };
+                let def = def
+                    .position(position)
+                    .velocity(velocity)
+                    .restitution(e)
+                    .friction(mu)
+                    .gravity_scale(g)
+                    .bullet(bullet);
+                if by_mass { def.mass(m) } else { def.density(m) }
+            },
+        )
 }
 
 /// One operation of an untrusted peer: a command, or a tick passing.
@@ -265,15 +405,26 @@ fn any_op() -> impl Strategy<Value = Op> {
 fn assert_sane(world: &World) {
     let bounds = world.settings().bounds;
     for (id, body) in world.bodies() {
-        assert!(bounds.contains_point(body.position()), "{id:?} outside the bounds: {:?}", body.position());
+        assert!(
+            bounds.contains_point(body.position()),
+            "{id:?} outside the bounds: {:?}",
+            body.position()
+        );
         let max = world.settings().max_speed;
         let vel = body.velocity();
-        assert!(vel.x.abs() <= max && vel.y.abs() <= max, "{id:?} faster than max_speed: {vel:?}");
+        assert!(
+            vel.x.abs() <= max && vel.y.abs() <= max,
+            "{id:?} faster than max_speed: {vel:?}"
+        );
     }
 }
 
+/// Cases of the untrusted-peer property: each case is up to 40 operations
+/// on a 6-body world plus a few ticks, so this stays around a second.
+const CASES: u32 = if cfg!(debug_assertions) { 256 } else { 1024 };
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(if cfg!(debug_assertions) { 128 } else { 512 }))]
+    #![proptest_config(ProptestConfig::with_cases(CASES))]
 
     /// Any sequence of commands with any ids and any fixed-point numbers:
     /// no panic; a refused command leaves the hash unchanged; the world stays
@@ -329,9 +480,11 @@ fn order_key(event: &Event) -> (u8, BodyId, Option<BodyId>) {
 
 #[test]
 fn events_come_in_the_documented_order() {
-    let mut settings = WorldSettings::default();
     // Small bounds so that a body can leave them: y ∈ [-10, 30].
-    settings.bounds = Aabb::new(v(0.0, 10.0), v(20.0, 20.0));
+    let settings = WorldSettings {
+        bounds: Aabb::new(v(0.0, 10.0), v(20.0, 20.0)),
+        ..WorldSettings::default()
+    };
     let mut world: World = World::new(settings);
     add_ground(&mut world);
     // Two stacks that settle and sleep, a bouncing ball that begins and
@@ -386,25 +539,42 @@ fn events_come_in_the_documented_order() {
         }
     }
     println!("events: ended/began/slept/woke/frozen counts {seen:?}");
-    assert!(seen.iter().all(|&n| n > 0), "some kind of event never happened: {seen:?}");
+    assert!(
+        seen.iter().all(|&n| n > 0),
+        "some kind of event never happened: {seen:?}"
+    );
 }
 
 // ------------------------------------------------------------------ queries
 
 #[test]
 fn queries_never_mutate_and_sort_as_documented() {
-    let mut settings = WorldSettings::default();
-    settings.gravity = Vec2::ZERO;
+    let settings = WorldSettings {
+        gravity: Vec2::ZERO,
+        ..WorldSettings::default()
+    };
     let mut world: World = World::new(settings);
     // Ids in order of creation: b before a, two boxes whose near faces are
     // both exactly at x = 4.5, so a tie on distance must go to b (smaller
     // id). They overlap, but a kinematic and a fixed body do not interact.
-    let b = world.add_body(BodyDef::kinematic(Shape::aabb(v(0.5, 0.3))).position(v(5.0, 0.0))).unwrap();
-    let a = world.add_body(BodyDef::fixed(Shape::aabb(v(0.5, 0.5))).position(v(5.0, 0.0))).unwrap();
-    let c = world.add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(v(10.0, 0.0))).unwrap();
-    let d = world.add_body(BodyDef::kinematic(Shape::aabb(v(1.0, 1.0))).position(v(20.0, 0.0))).unwrap();
-    let _off_axis = world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(3.0, 5.0))).unwrap();
-    let behind = world.add_body(BodyDef::fixed(Shape::aabb(v(0.5, 0.5))).position(v(-5.0, 0.0))).unwrap();
+    let b = world
+        .add_body(BodyDef::kinematic(Shape::aabb(v(0.5, 0.3))).position(v(5.0, 0.0)))
+        .unwrap();
+    let a = world
+        .add_body(BodyDef::fixed(Shape::aabb(v(0.5, 0.5))).position(v(5.0, 0.0)))
+        .unwrap();
+    let c = world
+        .add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(v(10.0, 0.0)))
+        .unwrap();
+    let d = world
+        .add_body(BodyDef::kinematic(Shape::aabb(v(1.0, 1.0))).position(v(20.0, 0.0)))
+        .unwrap();
+    let _off_axis = world
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(3.0, 5.0)))
+        .unwrap();
+    let behind = world
+        .add_body(BodyDef::fixed(Shape::aabb(v(0.5, 0.5))).position(v(-5.0, 0.0)))
+        .unwrap();
     world.step();
     let hash = world.state_hash();
     let (tick, events) = (world.tick(), world.events().to_vec());
@@ -417,7 +587,12 @@ fn queries_never_mutate_and_sort_as_documented() {
     assert_eq!(hit.body, b, "tie at 4.5 goes to the smaller id");
     assert_eq!(hit.hit.distance, fx(4.5), "box faces are exact");
     // Any non-zero direction length gives the same answer.
-    assert_eq!(world.raycast(origin, v(7.0, 0.0), fx(100.0)).map(|h| h.body), Some(b));
+    assert_eq!(
+        world
+            .raycast(origin, v(7.0, 0.0), fx(100.0))
+            .map(|h| h.body),
+        Some(b)
+    );
 
     let hits = world.raycast_all(origin, east, fx(100.0), &all);
     let ids: Vec<BodyId> = hits.iter().map(|h| h.body).collect();
@@ -428,39 +603,102 @@ fn queries_never_mutate_and_sort_as_documented() {
     }
     assert_eq!(hits[1].hit.distance, fx(4.5), "box faces are exact");
     // The circle's distance goes through a square root: within 1e-8.
-    println!("queries: ray hit on the circle at {:.12} (exact 9)", distances[2]);
+    println!(
+        "queries: ray hit on the circle at {:.12} (exact 9)",
+        distances[2]
+    );
     assert_eq!(hits[3].hit.distance, fx(19.0), "box faces are exact");
     for pair in hits.windows(2) {
         assert!((pair[0].hit.distance, pair[0].body) <= (pair[1].hit.distance, pair[1].body));
     }
-    let near: Vec<BodyId> = world.raycast_all(origin, east, fx(10.0), &all).iter().map(|h| h.body).collect();
+    let near: Vec<BodyId> = world
+        .raycast_all(origin, east, fx(10.0), &all)
+        .iter()
+        .map(|h| h.body)
+        .collect();
     assert_eq!(near, vec![b, a, c]);
 
-    let no_dynamic = QueryFilter { dynamic: false, ..QueryFilter::default() };
-    let only_fixed = QueryFilter { kinematic: false, dynamic: false, ..QueryFilter::default() };
-    assert_eq!(world.raycast_filtered(origin, east, fx(100.0), &only_fixed).map(|h| h.body), Some(a));
-    let only_dynamic = QueryFilter { kinematic: false, fixed: false, ..QueryFilter::default() };
-    assert_eq!(world.raycast_filtered(origin, east, fx(100.0), &only_dynamic).map(|h| h.body), Some(c));
-    let not_b = QueryFilter { exclude: Some(b), ..QueryFilter::default() };
-    assert_eq!(world.raycast_filtered(origin, east, fx(100.0), &not_b).map(|h| h.body), Some(a));
-    assert!(world.raycast(origin, Vec2::ZERO, fx(100.0)).is_none(), "zero direction");
-    assert!(world.raycast(origin, east, fx(-1.0)).is_none(), "negative distance");
-    assert!(world.raycast_all(origin, Vec2::ZERO, fx(100.0), &all).is_empty());
-    assert!(world.raycast(origin, east, fx(4.0)).is_none(), "out of reach");
+    let only_fixed = QueryFilter {
+        kinematic: false,
+        dynamic: false,
+        ..QueryFilter::default()
+    };
+    assert_eq!(
+        world
+            .raycast_filtered(origin, east, fx(100.0), &only_fixed)
+            .map(|h| h.body),
+        Some(a)
+    );
+    let only_dynamic = QueryFilter {
+        kinematic: false,
+        fixed: false,
+        ..QueryFilter::default()
+    };
+    assert_eq!(
+        world
+            .raycast_filtered(origin, east, fx(100.0), &only_dynamic)
+            .map(|h| h.body),
+        Some(c)
+    );
+    let not_b = QueryFilter {
+        exclude: Some(b),
+        ..QueryFilter::default()
+    };
+    assert_eq!(
+        world
+            .raycast_filtered(origin, east, fx(100.0), &not_b)
+            .map(|h| h.body),
+        Some(a)
+    );
+    assert!(
+        world.raycast(origin, Vec2::ZERO, fx(100.0)).is_none(),
+        "zero direction"
+    );
+    assert!(
+        world.raycast(origin, east, fx(-1.0)).is_none(),
+        "negative distance"
+    );
+    assert!(
+        world
+            .raycast_all(origin, Vec2::ZERO, fx(100.0), &all)
+            .is_empty()
+    );
+    assert!(
+        world.raycast(origin, east, fx(4.0)).is_none(),
+        "out of reach"
+    );
 
     let area = Aabb::new(v(5.0, 0.0), v(0.1, 0.1));
     assert_eq!(world.query_aabb(&area, &all), vec![b, a]);
     let wide = Aabb::new(v(0.0, 0.0), v(100.0, 100.0));
     let everything = world.query_aabb(&wide, &all);
     assert_eq!(everything.len(), 6);
-    assert!(everything.windows(2).all(|w| w[0] < w[1]), "query_aabb not in id order");
-    let no_dynamic = QueryFilter { dynamic: false, ..QueryFilter::default() };
+    assert!(
+        everything.windows(2).all(|w| w[0] < w[1]),
+        "query_aabb not in id order"
+    );
+    let no_dynamic = QueryFilter {
+        dynamic: false,
+        ..QueryFilter::default()
+    };
     assert_eq!(world.query_aabb(&wide, &no_dynamic), vec![b, a, d, behind]);
     assert_eq!(world.query_point(v(5.0, 0.0), &all), vec![b, a]);
-    assert_eq!(world.query_point(v(5.5, 0.0), &all), vec![b, a], "boundaries are included");
-    assert_eq!(world.query_point(v(5.5, 0.5), &all), vec![a], "a's corner, above b");
+    assert_eq!(
+        world.query_point(v(5.5, 0.0), &all),
+        vec![b, a],
+        "boundaries are included"
+    );
+    assert_eq!(
+        world.query_point(v(5.5, 0.5), &all),
+        vec![a],
+        "a's corner, above b"
+    );
     assert_eq!(world.query_point(v(5.0, 0.0), &not_b), vec![a]);
-    assert_eq!(world.query_point(v(11.0, 0.0), &all), vec![c], "on the circle");
+    assert_eq!(
+        world.query_point(v(11.0, 0.0), &all),
+        vec![c],
+        "on the circle"
+    );
     assert!(world.query_point(v(0.0, 0.0), &all).is_empty());
 
     // Hammer every query from many origins; nothing may change.

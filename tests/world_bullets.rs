@@ -24,9 +24,10 @@ const RADIUS: f64 = 0.05;
 const HALF_THICKNESS: f64 = 0.05;
 
 fn zero_gravity() -> World {
-    let mut settings = WorldSettings::default();
-    settings.gravity = Vec2::ZERO;
-    World::new(settings)
+    World::new(WorldSettings {
+        gravity: Vec2::ZERO,
+        ..WorldSettings::default()
+    })
 }
 
 /// What happened to one shot.
@@ -45,7 +46,14 @@ struct Shot {
 /// Fires a bullet from `start` with `velocity` at `target` for `ticks`
 /// ticks, checking after each step that the bullet's centre is in front of
 /// the target's near (left) face, `target.x - HALF_THICKNESS`.
-fn fire(world: &mut World, target: BodyId, start: Vec2, velocity: Vec2, bullet: bool, ticks: u32) -> Shot {
+fn fire(
+    world: &mut World,
+    target: BodyId,
+    start: Vec2,
+    velocity: Vec2,
+    bullet: bool,
+    ticks: u32,
+) -> Shot {
     let b = world
         .add_body(
             BodyDef::dynamic(Shape::circle(fx(RADIUS)))

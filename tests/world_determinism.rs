@@ -30,22 +30,44 @@ trait Scene {
 fn run_twice<S: Scene>(name: &str, mut a_scene: S, mut b_scene: S, ticks: u64) -> u64 {
     let mut a = a_scene.build();
     let mut b = b_scene.build();
-    assert_eq!(a.state_hash(), b.state_hash(), "{name}: hashes differ before the first step");
+    assert_eq!(
+        a.state_hash(),
+        b.state_hash(),
+        "{name}: hashes differ before the first step"
+    );
     let mut clone: Option<World> = None;
     for tick in 0..ticks {
         let ca = a_scene.commands(tick, &a);
         let cb = b_scene.commands(tick, &b);
-        assert_eq!(ca, cb, "{name}: the scene produced different commands at tick {tick}");
+        assert_eq!(
+            ca, cb,
+            "{name}: the scene produced different commands at tick {tick}"
+        );
         let ra = a.step_with(&ca);
         let rb = b.step_with(&cb);
-        assert_eq!(ra, rb, "{name}: command results differ at tick {}", a.tick());
-        assert_eq!(a.events(), b.events(), "{name}: events differ at tick {}", a.tick());
+        assert_eq!(
+            ra,
+            rb,
+            "{name}: command results differ at tick {}",
+            a.tick()
+        );
+        assert_eq!(
+            a.events(),
+            b.events(),
+            "{name}: events differ at tick {}",
+            a.tick()
+        );
         let (ha, hb) = (a.state_hash(), b.state_hash());
         assert_eq!(ha, hb, "{name}: state hashes differ at tick {}", a.tick());
         if let Some(c) = clone.as_mut() {
             // The clone gets the commands run A got (ids are identical).
             c.step_with(&ca);
-            assert_eq!(c.state_hash(), ha, "{name}: the clone diverged at tick {}", a.tick());
+            assert_eq!(
+                c.state_hash(),
+                ha,
+                "{name}: the clone diverged at tick {}",
+                a.tick()
+            );
         }
         if tick == ticks / 3 {
             clone = Some(a.clone());
@@ -116,7 +138,8 @@ impl Scene for Mixed {
         let mut w = World::new(WorldSettings::default());
         self.ground = Some(add_ground(&mut w));
         for x in [-12.0, 12.0] {
-            w.add_body(BodyDef::fixed(Shape::aabb(v(0.5, 10.0))).position(v(x, 10.0))).unwrap();
+            w.add_body(BodyDef::fixed(Shape::aabb(v(0.5, 10.0))).position(v(x, 10.0)))
+                .unwrap();
         }
         self.platform = Some(
             w.add_body(BodyDef::kinematic(Shape::aabb(v(2.0, 0.25))).position(v(0.0, 6.0)))
@@ -129,10 +152,14 @@ impl Scene for Mixed {
                 BodyDef::dynamic(Shape::circle(fx(self.rng.range(0.15, 0.5))))
                     .restitution(fx(self.rng.range(0.0, 0.6)))
             } else {
-                BodyDef::dynamic(Shape::aabb(v(self.rng.range(0.2, 0.6), self.rng.range(0.2, 0.6))))
-                    .friction(fx(self.rng.range(0.1, 0.9)))
+                BodyDef::dynamic(Shape::aabb(v(
+                    self.rng.range(0.2, 0.6),
+                    self.rng.range(0.2, 0.6),
+                )))
+                .friction(fx(self.rng.range(0.1, 0.9)))
             };
-            self.dynamic.push(w.add_body(def.position(v(x, y))).unwrap());
+            self.dynamic
+                .push(w.add_body(def.position(v(x, y))).unwrap());
         }
         w
     }
@@ -143,7 +170,10 @@ impl Scene for Mixed {
         // The platform oscillates: 1.5 units/s, reversing every second.
         if tick % 60 == 0 {
             let s = if (tick / 60) % 2 == 0 { 1.5 } else { -1.5 };
-            out.push(Command::SetVelocity { body: platform, velocity: v(s, 0.0) });
+            out.push(Command::SetVelocity {
+                body: platform,
+                velocity: v(s, 0.0),
+            });
         }
         match tick % 50 {
             7 => {
@@ -153,7 +183,10 @@ impl Scene for Mixed {
             }
             13 => {
                 let body = self.pick();
-                out.push(Command::SetVelocity { body, velocity: v(self.rng.range(-4.0, 4.0), 2.0) });
+                out.push(Command::SetVelocity {
+                    body,
+                    velocity: v(self.rng.range(-4.0, 4.0), 2.0),
+                });
             }
             21 => {
                 let def = BodyDef::dynamic(Shape::circle(fx(0.3)))
@@ -168,7 +201,10 @@ impl Scene for Mixed {
             }
             37 => {
                 let body = self.pick();
-                out.push(Command::SetPosition { body, position: v(self.rng.range(-9.0, 9.0), 20.0) });
+                out.push(Command::SetPosition {
+                    body,
+                    position: v(self.rng.range(-9.0, 9.0), 20.0),
+                });
                 out.push(Command::Wake(self.pick()));
             }
             43 => {
@@ -176,14 +212,20 @@ impl Scene for Mixed {
                 if let Some(&stale) = self.removed.last() {
                     out.push(Command::Wake(stale));
                 }
-                out.push(Command::ApplyImpulse { body: self.ground.unwrap(), impulse: v(1.0, 0.0) });
+                out.push(Command::ApplyImpulse {
+                    body: self.ground.unwrap(),
+                    impulse: v(1.0, 0.0),
+                });
             }
             _ => {}
         }
         // Spawned ids are learnt from the world (deterministic too): every
         // live dynamic body not yet known is added to the pool.
         for (id, body) in world.bodies() {
-            if body.kind() == BodyKind::Dynamic && !self.dynamic.contains(&id) && !self.removed.contains(&id) {
+            if body.kind() == BodyKind::Dynamic
+                && !self.dynamic.contains(&id)
+                && !self.removed.contains(&id)
+            {
                 self.dynamic.push(id);
             }
         }

@@ -31,10 +31,12 @@
 //!
 //! # Duration
 //!
-//! The issue asks for 60 s (3600 ticks). In a debug build this scene takes
-//! far longer than the rest of the suite, so debug runs 600 ticks (10 s,
-//! ten full shaking periods, which already mixes the pile completely) and
-//! release runs the full 3600. CI runs both profiles.
+//! The full 60 s (3600 ticks) in both profiles: the test profile builds
+//! with opt-level 1, and the run takes ~15 s in debug and in release alike
+//! (~4 ms per step on a loaded 2-core machine). The wall-overlap figure is
+//! also reported as the maximum over the whole run (not asserted: the issue
+//! bounds the end state, and mid-shake a wall moving at 3 units/s into the
+//! pile may briefly push deeper).
 
 mod common;
 
@@ -53,7 +55,10 @@ const INNER_CENTRE: (f64, f64) = (0.0, 15.0);
 /// Wall offset at time `t` seconds.
 fn offset(t: f64) -> (f64, f64) {
     let w = 2.0 * PI;
-    (AMPLITUDE * (w * t).sin(), AMPLITUDE * (2.0 * w * t).sin() / 2.0)
+    (
+        AMPLITUDE * (w * t).sin(),
+        AMPLITUDE * (2.0 * w * t).sin() / 2.0,
+    )
 }
 
 /// Mean velocity of each tick of one period, converted at the edge.
@@ -70,7 +75,7 @@ fn velocity_table() -> Vec<Vec2> {
 
 #[test]
 fn thousand_circles_in_a_shaking_box_stay_inside() {
-    let ticks: usize = if cfg!(debug_assertions) { 600 } else { 3600 };
+    let ticks: usize = 3600;
     let mut world: World = World::new(WorldSettings::default());
 
     let (hx, hy) = INNER_HALF;
@@ -112,7 +117,11 @@ fn thousand_circles_in_a_shaking_box_stay_inside() {
     for tick in 0..ticks {
         let velocity = table[tick % TICKS_PER_PERIOD];
         commands.clear();
-        commands.extend(walls.iter().map(|&body| Command::SetVelocity { body, velocity }));
+        commands.extend(
+            walls
+                .iter()
+                .map(|&body| Command::SetVelocity { body, velocity }),
+        );
         for result in world.step_with(&commands) {
             result.expect("wall velocity command refused");
         }
@@ -156,5 +165,8 @@ fn thousand_circles_in_a_shaking_box_stay_inside() {
         elapsed.as_secs_f64(),
         elapsed.as_secs_f64() * 1000.0 / ticks as f64
     );
-    assert!(worst_end <= 0.05, "a circle overlaps a wall by {worst_end} at the end");
+    assert!(
+        worst_end <= 0.05,
+        "a circle overlaps a wall by {worst_end} at the end"
+    );
 }

@@ -47,7 +47,10 @@ fn a_ball_dropped_on_a_sleeping_stack_wakes_it() {
             if woke_at[k].is_none() && woke_in(world.events(), id) {
                 woke_at[k] = Some(world.tick());
                 // The event and the state agree in the step that reports it.
-                assert!(world.body(id).unwrap().is_awake(), "box {k}: Woke event but asleep");
+                assert!(
+                    world.body(id).unwrap().is_awake(),
+                    "box {k}: Woke event but asleep"
+                );
             }
         }
         if woke_at.iter().all(Option::is_some) {
@@ -65,11 +68,20 @@ fn a_ball_dropped_on_a_sleeping_stack_wakes_it() {
         // soon as the pair is within the speculative margin would give
         // k = 25.) Allow 24..=30.
         let n = tick - dropped_at;
-        assert!((24..=30).contains(&n), "box {k} woke {n} ticks after the drop");
+        assert!(
+            (24..=30).contains(&n),
+            "box {k} woke {n} ticks after the drop"
+        );
     }
     // The whole island woke in the same step.
-    assert!(woke_at.windows(2).all(|w| w[0] == w[1]), "the island woke piecemeal: {woke_at:?}");
-    assert!(world.body(ball).unwrap().position().y.to_f64() > 5.0, "the ball went into the stack");
+    assert!(
+        woke_at.windows(2).all(|w| w[0] == w[1]),
+        "the island woke piecemeal: {woke_at:?}"
+    );
+    assert!(
+        world.body(ball).unwrap().position().y.to_f64() > 5.0,
+        "the ball went into the stack"
+    );
 }
 
 /// Removes the bottom box (through `remove`) and checks the rest fall.
@@ -77,10 +89,19 @@ fn remove_bottom_and_watch(remove: impl FnOnce(&mut World, BodyId) -> Vec<Event>
     let (mut world, stack) = sleeping_stack();
     let before: Vec<f64> = stack.iter().map(|&id| y_of(&world, id)).collect();
     let events = remove(&mut world, stack[0]);
-    assert!(world.body(stack[0]).is_none(), "the bottom box is still there");
+    assert!(
+        world.body(stack[0]).is_none(),
+        "the bottom box is still there"
+    );
     for (k, &id) in stack.iter().enumerate().skip(1) {
-        assert!(world.body(id).unwrap().is_awake(), "box {k} still asleep after its support went");
-        assert!(woke_in(&events, id), "no Woke event for box {k}: {events:?}");
+        assert!(
+            world.body(id).unwrap().is_awake(),
+            "box {k} still asleep after its support went"
+        );
+        assert!(
+            woke_in(&events, id),
+            "no Woke event for box {k}: {events:?}"
+        );
     }
     // Three ticks of free fall with symplectic Euler: the drop after n ticks
     // is g·h²·n(n+1)/2 = 10/3600 · 6 = 0.0167. The boxes all fall together
@@ -93,7 +114,11 @@ fn remove_bottom_and_watch(remove: impl FnOnce(&mut World, BodyId) -> Vec<Event>
         world.step();
         for (k, &id) in stack.iter().enumerate().skip(1) {
             let y = y_of(&world, id);
-            assert!(y < y_prev[k], "box {k} did not move down at tick {tick} ({y} >= {})", y_prev[k]);
+            assert!(
+                y < y_prev[k],
+                "box {k} did not move down at tick {tick} ({y} >= {})",
+                y_prev[k]
+            );
             y_prev[k] = y;
         }
     }
@@ -103,7 +128,9 @@ fn remove_bottom_and_watch(remove: impl FnOnce(&mut World, BodyId) -> Vec<Event>
         .skip(1)
         .map(|(k, &id)| before[k] - y_of(&world, id))
         .collect();
-    println!("waking: after removing the bottom box, drops over 3 ticks {drops:?} (free fall {free_fall:.6})");
+    println!(
+        "waking: after removing the bottom box, drops over 3 ticks {drops:?} (free fall {free_fall:.6})"
+    );
     for (k, d) in drops.iter().enumerate() {
         assert!(*d > free_fall / 2.0, "box {} dropped only {d}", k + 1);
     }

@@ -4,6 +4,11 @@
 //! Inputs are drawn by the seeded [`Rng`] and quantised to 1/1024, so they
 //! are exact in both types: the differences come only from the queries
 //! (including `Ray::new`'s normalisation, which each type does itself).
+//! The ray rows are end to end: each type normalises the direction itself,
+//! and a direction rounded by an ulp (2⁻³² rad) moves a hit thousands of
+//! units away sideways by ~1e-6, which a grazing incidence turns into a
+//! much larger shift along the surface; so a third row runs the f64 cast
+//! along the `Fx` ray's exact direction, which measures the cast alone.
 //! Errors are compared only where both types report a hit; cases where one
 //! type hits and the other does not (or, for TOI, where the outcomes
 //! `Hit` / `Overlapping` / `Miss` differ) are counted as outcome
@@ -41,7 +46,11 @@ impl Stats {
     }
 
     fn row(&self, query: &str) {
-        let mean = if self.both_hit > 0 { self.sum / f64::from(self.both_hit) } else { 0.0 };
+        let mean = if self.both_hit > 0 {
+            self.sum / f64::from(self.both_hit)
+        } else {
+            0.0
+        };
         println!(
             "| {query} | {CASES} ({} both hit, {} outcome mismatches) | {:.2e} | {:.2e} |",
             self.both_hit, self.mismatches, self.max, mean
@@ -77,7 +86,10 @@ fn scale(rng: &mut Rng) -> f64 {
 }
 
 fn ray_case(rng: &mut Rng) -> RayCase {
-    let center = (rng.range(-30_000.0, 30_000.0), rng.range(-30_000.0, 30_000.0));
+    let center = (
+        rng.range(-30_000.0, 30_000.0),
+        rng.range(-30_000.0, 30_000.0),
+    );
     let s = scale(rng);
     let origin = (center.0 + rng.range(-s, s), center.1 + rng.range(-s, s));
     let size = (rng.range(0.01, 64.0), rng.range(0.01, 64.0));
@@ -101,7 +113,10 @@ fn ray_case(rng: &mut Rng) -> RayCase {
 
 fn toi_case(rng: &mut Rng) -> ToiCase {
     let q = |x: f64| (x * 1024.0).round() / 1024.0;
-    let ca = (rng.range(-30_000.0, 30_000.0), rng.range(-30_000.0, 30_000.0));
+    let ca = (
+        rng.range(-30_000.0, 30_000.0),
+        rng.range(-30_000.0, 30_000.0),
+    );
     let s = scale(rng);
     let cb = (ca.0 + rng.range(-s, s), ca.1 + rng.range(-s, s));
     let sa = (rng.range(0.01, 64.0), rng.range(0.01, 64.0));
@@ -131,17 +146,27 @@ fn make_ray<S: Scalar>(c: &RayCase) -> Option<Ray<S>> {
     Ray::new(vec(c.origin), vec(c.direction), S::from_f64(c.max_distance))
 }
 
+/// The `Fx` ray converted exactly to f64: the f64 cast then runs along the
+/// very same (rounded) direction, which isolates the cast's arithmetic from
+/// the normalisation in `Ray::new`.
+fn fx_ray_in_f64(c: &RayCase) -> Option<Ray<f64>> {
+    let r = make_ray::<Fx>(c)?;
+    Some(Ray {
+        origin: r.origin.cast(),
+        direction: r.direction.cast(),
+        max_distance: r.max_distance.to_f64(),
+    })
+}
+
 /// `ray_circle`: distance and point, as f64.
-fn ray_circle_case<S: Scalar>(c: &RayCase) -> Option<(f64, (f64, f64))> {
-    let ray = make_ray::<S>(c)?;
-    let hit = ray_circle(&ray, &Circle::new(vec(c.center), S::from_f64(c.size.0)))?;
+fn ray_circle_on<S: Scalar>(ray: Option<Ray<S>>, c: &RayCase) -> Option<(f64, (f64, f64))> {
+    let hit = ray_circle(&ray?, &Circle::new(vec(c.center), S::from_f64(c.size.0)))?;
     Some((hit.distance.to_f64(), hit.point.to_f64()))
 }
 
 /// `ray_aabb`: distance and point, as f64.
-fn ray_aabb_case<S: Scalar>(c: &RayCase) -> Option<(f64, (f64, f64))> {
-    let ray = make_ray::<S>(c)?;
-    let hit = ray_aabb(&ray, &Aabb::new(vec(c.center), vec(c.size)))?;
+fn ray_aabb_on<S: Scalar>(ray: Option<Ray<S>>, c: &RayCase) -> Option<(f64, (f64, f64))> {
+    let hit = ray_aabb(&ray?, &Aabb::new(vec(c.center), vec(c.size)))?;
     Some((hit.distance.to_f64(), hit.point.to_f64()))
 }
 
@@ -172,27 +197,39 @@ fn toi_cb_case<S: Scalar>(c: &ToiCase) -> (u8, f64) {
     outcome(toi_circle_aabb(&a, vec(c.da), &b, vec(c.db)))
 }
 
-/// Runs one ray query over `CASES` cases and prints its distance and point
-/// rows.
-fn ray_rows(name: &str, seed: u64, query: fn(&RayCase) -> [Option<(f64, (f64, f64))>; 2]) {
+/// One ray query's answers: `Fx`, f64, and f64 along the `Fx` direction.
+type RayAnswers = [Option<(f64, (f64, f64))>; 3];
+
+/// Runs one ray query over `CASES` cases and prints its rows: distance and
+/// point (end to end, each type normalising the direction itself), and the
+/// distance with the f64 cast run along the `Fx` ray's direction.
+fn ray_rows(name: &str, seed: u64, query: fn(&RayCase) -> RayAnswers) {
     let mut rng = Rng(seed);
-    let (mut distance, mut point) = (Stats::default(), Stats::default());
+    let (mut distance, mut point, mut same) =
+        (Stats::default(), Stats::default(), Stats::default());
     for _ in 0..CASES {
         let case = ray_case(&mut rng);
-        match query(&case) {
-            [Some((d0, p0)), Some((d1, p1))] => {
+        let [a, b, c] = query(&case);
+        match (a, b) {
+            (Some((d0, p0)), Some((d1, p1))) => {
                 distance.add((d0 - d1).abs());
                 point.add((p0.0 - p1.0).hypot(p0.1 - p1.1));
             }
-            [None, None] => {}
+            (None, None) => {}
             _ => {
                 distance.mismatches += 1;
                 point.mismatches += 1;
             }
         }
+        match (a, c) {
+            (Some((d0, _)), Some((d1, _))) => same.add((d0 - d1).abs()),
+            (None, None) => {}
+            _ => same.mismatches += 1,
+        }
     }
     distance.row(&format!("{name} distance"));
     point.row(&format!("{name} point"));
+    same.row(&format!("{name} distance, f64 along the Fx direction"));
 }
 
 /// Runs one TOI query over `CASES` cases and prints its `t` row.
@@ -214,10 +251,26 @@ fn toi_row(name: &str, seed: u64, query: fn(&ToiCase) -> [(u8, f64); 2]) {
 /// Prints the rows of the ray and TOI queries.
 pub fn report() {
     ray_rows("ray_circle", 0x5241_5943, |c| {
-        [ray_circle_case::<Fx>(c), ray_circle_case::<f64>(c)]
+        [
+            ray_circle_on(make_ray::<Fx>(c), c),
+            ray_circle_on(make_ray::<f64>(c), c),
+            ray_circle_on(fx_ray_in_f64(c), c),
+        ]
     });
-    ray_rows("ray_aabb", 0x5241_5942, |c| [ray_aabb_case::<Fx>(c), ray_aabb_case::<f64>(c)]);
-    toi_row("toi_circle_circle", 0x544F_4943, |c| [toi_cc_case::<Fx>(c), toi_cc_case::<f64>(c)]);
-    toi_row("toi_aabb_aabb", 0x544F_4942, |c| [toi_bb_case::<Fx>(c), toi_bb_case::<f64>(c)]);
-    toi_row("toi_circle_aabb", 0x544F_4941, |c| [toi_cb_case::<Fx>(c), toi_cb_case::<f64>(c)]);
+    ray_rows("ray_aabb", 0x5241_5942, |c| {
+        [
+            ray_aabb_on(make_ray::<Fx>(c), c),
+            ray_aabb_on(make_ray::<f64>(c), c),
+            ray_aabb_on(fx_ray_in_f64(c), c),
+        ]
+    });
+    toi_row("toi_circle_circle", 0x544F_4943, |c| {
+        [toi_cc_case::<Fx>(c), toi_cc_case::<f64>(c)]
+    });
+    toi_row("toi_aabb_aabb", 0x544F_4942, |c| {
+        [toi_bb_case::<Fx>(c), toi_bb_case::<f64>(c)]
+    });
+    toi_row("toi_circle_aabb", 0x544F_4941, |c| {
+        [toi_cb_case::<Fx>(c), toi_cb_case::<f64>(c)]
+    });
 }

@@ -4,15 +4,35 @@
 //! scene (by name) or a scene file (by path), printing the state hash every
 //! K ticks and a final line with the body count and the time per step.
 //! With no arguments it runs the built-in default scene.
+//!
+//! Replays and snapshots:
+//!
+//! * `clockwork2d record SCENE --ticks N [--inputs FILE] [--seed S]
+//!   [--hash-every K] -o OUT` records a replay (with a seeded scripted
+//!   input when no input file is given);
+//! * `clockwork2d verify FILE` re-simulates a replay: exit 0 and
+//!   `ok: N ticks, final hash 0x…`, exit 1 and `diverged at tick T: …`,
+//!   exit 2 and a one-line reason for a file it cannot read;
+//! * `clockwork2d info FILE` prints a snapshot's or replay's header and a
+//!   summary;
+//! * `clockwork2d diff A B` lists the differences between two snapshots
+//!   (exit 0 identical, 1 different, 2 unreadable).
 #![forbid(unsafe_code)]
 
-use std::path::Path;
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand};
-use clockwork2d::World;
+use clockwork2d::diff::diff_worlds;
+use clockwork2d::dynamics::BodyKind;
+use clockwork2d::replay::{Recorder, Replay, parse_inputs, scripted_commands};
 use clockwork2d::scene::{BUILTIN_SCENES, DEFAULT_SCENE, Scene, SceneError, builtin};
+use clockwork2d::snapshot::{FileHeader, FileKind, SnapshotError};
+use clockwork2d::{Command, Fx, Scalar, World};
+use fixed::types::I48F16;
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 #[derive(Parser)]
 #[command(
@@ -41,6 +61,49 @@ enum Cmd {
     },
     /// Lists the built-in scenes.
     Scenes,
+    /// Records a replay of a scene.
+    Record {
+        /// A built-in scene name or a path to a .ron scene file.
+        scene: String,
+        /// Ticks to record.
+        #[arg(long)]
+        ticks: u64,
+        /// A RON list of (tick, [commands]); without it, a seeded scripted
+        /// input (impulses, spawns, despawns) is used.
+        #[arg(long)]
+        inputs: Option<PathBuf>,
+        /// Seed of the scripted input.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Record the state hash every K ticks.
+        #[arg(long, default_value_t = 1)]
+        hash_every: u32,
+        /// The replay file to write.
+        #[arg(short, long)]
+        output: PathBuf,
+    },
+    /// Re-simulates a replay and checks its recorded state hashes (exit 0
+    /// ok, 1 diverged, 2 unreadable).
+    Verify {
+        /// A replay file (a snapshot file is checked for validity).
+        file: PathBuf,
+    },
+    /// Prints a snapshot's or replay's header and a summary.
+    Info {
+        /// A snapshot or replay file.
+        file: PathBuf,
+    },
+    /// Lists the differences between two snapshots (exit 0 identical, 1
+    /// different, 2 unreadable).
+    Diff {
+        /// Snapshot A.
+        a: PathBuf,
+        /// Snapshot B.
+        b: PathBuf,
+        /// Most differences to print.
+        #[arg(long, default_value_t = 100)]
+        limit: usize,
+    },
 }
 
 fn load(scene: &str) -> Result<Scene, SceneError> {
@@ -84,11 +147,26 @@ fn run(scene: &str, ticks: u64, hash_every: u64) -> Result<(), SceneError> {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
-    let result = match cli.command.unwrap_or(Cmd::Run {
+    let command = cli.command.unwrap_or(Cmd::Run {
         scene: DEFAULT_SCENE.to_owned(),
         ticks: 600,
         hash_every: 60,
-    }) {
+    });
+    let command = match command {
+        Cmd::Record {
+            scene,
+            ticks,
+            inputs,
+            seed,
+            hash_every,
+            output,
+        } => return record(&scene, ticks, inputs.as_deref(), seed, hash_every, &output),
+        Cmd::Verify { file } => return verify(&file),
+        Cmd::Info { file } => return info(&file),
+        Cmd::Diff { a, b, limit } => return diff(&a, &b, limit),
+        other => other,
+    };
+    let result = match command {
         Cmd::Run {
             scene,
             ticks,
@@ -100,6 +178,8 @@ fn main() -> ExitCode {
             }
             Ok(())
         }
+        // Handled above.
+        Cmd::Record { .. } | Cmd::Verify { .. } | Cmd::Info { .. } | Cmd::Diff { .. } => Ok(()),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -108,4 +188,310 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// Prints a one-line error and gives exit code 2.
+fn fail(message: impl std::fmt::Display) -> ExitCode {
+    eprintln!("error: {message}");
+    ExitCode::from(2)
+}
+
+fn read_file(path: &Path) -> Result<Vec<u8>, String> {
+    std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))
+}
+
+fn record(
+    scene_name: &str,
+    ticks: u64,
+    inputs: Option<&Path>,
+    seed: u64,
+    hash_every: u32,
+    output: &Path,
+) -> ExitCode {
+    let world: World = match load(scene_name).and_then(|s| s.build()) {
+        Ok(w) => w,
+        Err(e) => return fail(e),
+    };
+    let inputs = match inputs {
+        None => None,
+        Some(path) => {
+            let text = match std::fs::read_to_string(path) {
+                Ok(t) => t,
+                Err(e) => return fail(format!("cannot read {}: {e}", path.display())),
+            };
+            match parse_inputs::<Fx>(&text) {
+                Ok(list) => Some(list),
+                Err(e) => return fail(format!("{}: {e}", path.display())),
+            }
+        }
+    };
+    let start = world.tick();
+    let mut recorder = Recorder::new(world, hash_every);
+    let mut next = 0;
+    let mut batch: Vec<Command> = Vec::new();
+    for _ in 0..ticks {
+        batch.clear();
+        match &inputs {
+            None => batch.extend(scripted_commands(recorder.world(), seed)),
+            Some(list) => {
+                let offset = recorder.world().tick().wrapping_sub(start);
+                while let Some((t, commands)) = list.get(next)
+                    && *t <= offset
+                {
+                    // Entries for ticks already past (duplicates sorted
+                    // together) are applied now, in file order.
+                    batch.extend(commands.iter().cloned());
+                    next += 1;
+                }
+            }
+        }
+        recorder.step_with(&batch);
+    }
+    if let Some(list) = &inputs
+        && next < list.len()
+    {
+        eprintln!(
+            "warning: {} input entries are after tick {ticks} and were not used",
+            list.len() - next
+        );
+    }
+    let replay = recorder.finish();
+    let bytes = replay.to_bytes();
+    if let Err(e) = std::fs::write(output, &bytes) {
+        return fail(format!("cannot write {}: {e}", output.display()));
+    }
+    println!(
+        "recorded {ticks} ticks of {scene_name} to {}: {} bytes, {} checkpoints, final hash 0x{:016x}",
+        output.display(),
+        bytes.len(),
+        replay.checkpoints().len(),
+        replay.final_hash()
+    );
+    ExitCode::SUCCESS
+}
+
+/// Runs `$body` with `$S` bound to the scalar type of id `$id`, or
+/// evaluates `$unknown` for an id this build does not know.
+macro_rules! with_scalar {
+    ($id:expr, $S:ident => $body:expr, _ => $unknown:expr) => {
+        match $id {
+            id if id == <Fx as Scalar>::ID => {
+                type $S = Fx;
+                $body
+            }
+            id if id == <I48F16 as Scalar>::ID => {
+                type $S = I48F16;
+                $body
+            }
+            id if id == <f64 as Scalar>::ID => {
+                type $S = f64;
+                $body
+            }
+            id if id == <f32 as Scalar>::ID => {
+                type $S = f32;
+                $body
+            }
+            _ => $unknown,
+        }
+    };
+}
+
+fn verify(path: &Path) -> ExitCode {
+    let bytes = match read_file(path) {
+        Ok(b) => b,
+        Err(e) => return fail(e),
+    };
+    let header = match FileHeader::read(&bytes) {
+        Ok(h) => h,
+        Err(e) => return fail(format!("{}: {e}", path.display())),
+    };
+    with_scalar!(header.scalar_id, S => verify_as::<S>(path, &bytes, header.kind),
+        _ => fail(format!("{}: unknown scalar id {}", path.display(), header.scalar_id)))
+}
+
+fn verify_as<S: Scalar>(path: &Path, bytes: &[u8], kind: FileKind) -> ExitCode {
+    if kind == FileKind::Snapshot {
+        return match World::<S>::restore(bytes) {
+            Ok(w) => {
+                println!(
+                    "ok: snapshot at tick {}, hash 0x{:016x}",
+                    w.tick(),
+                    w.state_hash()
+                );
+                ExitCode::SUCCESS
+            }
+            Err(e) => fail(format!("{}: {e}", path.display())),
+        };
+    }
+    let replay = match Replay::<S>::from_bytes(bytes) {
+        Ok(r) => r,
+        Err(e) => return fail(format!("{}: {e}", path.display())),
+    };
+    // The bar appears only once a verify has taken a second, and never
+    // when the output goes to a file or a pipe.
+    let interactive = std::io::stdout().is_terminal() && std::io::stderr().is_terminal();
+    let bar = ProgressBar::with_draw_target(Some(replay.ticks()), ProgressDrawTarget::hidden());
+    if let Ok(style) =
+        ProgressStyle::with_template("verifying {bar:40} {pos}/{len} ticks ({per_sec}, eta {eta})")
+    {
+        bar.set_style(style);
+    }
+    let started = Instant::now();
+    let mut shown = false;
+    let result = replay.verify_with_progress(|done, total| {
+        if done % 32 != 0 && done != total {
+            return;
+        }
+        if !shown && interactive && started.elapsed() > Duration::from_secs(1) {
+            bar.set_draw_target(ProgressDrawTarget::stderr());
+            shown = true;
+        }
+        bar.set_position(done);
+    });
+    bar.finish_and_clear();
+    match result {
+        Ok(report) => {
+            println!(
+                "ok: {} ticks, final hash 0x{:016x}",
+                report.ticks, report.final_hash
+            );
+            ExitCode::SUCCESS
+        }
+        Err(divergence) => {
+            println!("{divergence}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+fn info(path: &Path) -> ExitCode {
+    let bytes = match read_file(path) {
+        Ok(b) => b,
+        Err(e) => return fail(e),
+    };
+    let header = match FileHeader::read(&bytes) {
+        Ok(h) => h,
+        Err(e) => return fail(format!("{}: {e}", path.display())),
+    };
+    println!("clockwork2d {}: {}", header.kind, path.display());
+    println!("  format version  {}", header.format_version);
+    println!("  written by      clockwork2d {}", header.crate_version);
+    println!(
+        "  scalar          {} (id {})",
+        header.scalar_name, header.scalar_id
+    );
+    println!("  file size       {} bytes", bytes.len());
+    println!("  payload         {} bytes", header.payload_len);
+    if let Some(k) = header.hash_interval {
+        println!("  hash interval   {k} ticks");
+    }
+    let result = with_scalar!(header.scalar_id, S => info_as::<S>(&bytes, header.kind),
+        _ => Err(SnapshotError::BadHeader { reason: "unknown scalar id" }));
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => fail(format!("{}: {e}", path.display())),
+    }
+}
+
+fn info_as<S: Scalar>(bytes: &[u8], kind: FileKind) -> Result<(), SnapshotError> {
+    let world = match kind {
+        FileKind::Snapshot => World::<S>::restore(bytes)?,
+        FileKind::Replay => {
+            let replay = Replay::<S>::from_bytes(bytes)?;
+            println!(
+                "  ticks           {} (tick {} to {})",
+                replay.ticks(),
+                replay.initial().tick(),
+                replay.final_tick()
+            );
+            println!("  commands        {}", replay.commands().len());
+            println!("  checkpoints     {}", replay.checkpoints().len());
+            println!("  final hash      0x{:016x} (recorded)", replay.final_hash());
+            println!("  initial world:");
+            replay.initial().clone()
+        }
+    };
+    summarize(&world);
+    Ok(())
+}
+
+fn summarize<S: Scalar>(world: &World<S>) {
+    let count = |kind: BodyKind| world.bodies().filter(|(_, b)| b.kind() == kind).count();
+    let asleep = world
+        .bodies()
+        .filter(|(_, b)| b.kind() == BodyKind::Dynamic && !b.is_awake())
+        .count();
+    let frozen = world.bodies().filter(|(_, b)| b.is_frozen()).count();
+    println!("  tick            {}", world.tick());
+    println!(
+        "  bodies          {} live: {} dynamic ({asleep} asleep, {frozen} frozen), {} kinematic, {} fixed",
+        world.body_count(),
+        count(BodyKind::Dynamic),
+        count(BodyKind::Kinematic),
+        count(BodyKind::Fixed)
+    );
+    println!("  touching pairs  {}", world.touching_pairs().count());
+    println!("  constraints     {}", world.constraints().count());
+    println!("  last events     {}", world.events().len());
+    println!("  state hash      0x{:016x}", world.state_hash());
+    println!("  state hash128   0x{:032x}", world.state_hash128());
+    let parts: Vec<String> = world
+        .state_digest()
+        .parts()
+        .iter()
+        .map(|(name, d)| format!("{name} 0x{d:016x}"))
+        .collect();
+    println!("  parts           {}", parts.join(", "));
+}
+
+fn diff(a: &Path, b: &Path, limit: usize) -> ExitCode {
+    let (bytes_a, bytes_b) = match (read_file(a), read_file(b)) {
+        (Ok(x), Ok(y)) => (x, y),
+        (Err(e), _) | (_, Err(e)) => return fail(e),
+    };
+    let header = match FileHeader::read(&bytes_a) {
+        Ok(h) => h,
+        Err(e) => return fail(format!("{}: {e}", a.display())),
+    };
+    with_scalar!(header.scalar_id, S => diff_as::<S>(a, &bytes_a, b, &bytes_b, limit),
+        _ => fail(format!("{}: unknown scalar id {}", a.display(), header.scalar_id)))
+}
+
+fn diff_as<S: Scalar>(a: &Path, bytes_a: &[u8], b: &Path, bytes_b: &[u8], limit: usize) -> ExitCode {
+    let wa = match World::<S>::restore(bytes_a) {
+        Ok(w) => w,
+        Err(e) => return fail(format!("{}: {e}", a.display())),
+    };
+    let wb = match World::<S>::restore(bytes_b) {
+        Ok(w) => w,
+        Err(e) => return fail(format!("{}: {e}", b.display())),
+    };
+    let differences = diff_worlds(&wa, &wb);
+    if differences.is_empty() {
+        println!(
+            "identical: tick {}, state hash 0x{:016x}",
+            wa.tick(),
+            wa.state_hash()
+        );
+        return ExitCode::SUCCESS;
+    }
+    let parts = wa.state_digest().differing_parts(&wb.state_digest());
+    println!(
+        "{} differences (A tick {}, B tick {}; parts that differ: {})",
+        differences.len(),
+        wa.tick(),
+        wb.tick(),
+        if parts.is_empty() {
+            "events only".to_owned()
+        } else {
+            parts.join(", ")
+        }
+    );
+    for d in differences.iter().take(limit) {
+        println!("{d}");
+    }
+    if differences.len() > limit {
+        println!("... and {} more", differences.len() - limit);
+    }
+    ExitCode::from(1)
 }

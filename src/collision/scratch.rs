@@ -21,8 +21,8 @@ pub(crate) struct StepScratch<S: Scalar> {
     pub(crate) displacements: Vec<Vec2<S>>,
     /// Union-find parents for islands.
     pub(crate) parents: Vec<u32>,
-    /// Velocity change each slot received from springs this substep (the
-    /// trapezoidal rule moves positions by only half of it).
+    /// The part `(1 − θ)·Δv` of the velocity change each slot received from
+    /// springs this substep that its position does not follow (θ-method).
     pub(crate) spring_dv: Vec<Vec2<S>>,
     /// Active rope rows, solved in the same loop as the contacts.
     pub(crate) rope_rows: Vec<ContactConstraint<S>>,

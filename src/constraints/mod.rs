@@ -1,35 +1,37 @@
 //! Constraints: bendy springs, radial springs and ropes.
 //!
-//! # Spring integration (trapezoidal, "implicit midpoint")
+//! # Spring integration (θ-method between trapezoidal and implicit Euler)
 //!
-//! Springs are integrated with the trapezoidal rule on the relative
-//! coordinate `x` (stretch) and velocity `v` along the spring's axis, with
-//! `W = w_a + w_b` the summed inverse masses:
-//!
-//! ```text
-//! v' = v + h·W·(-k·(x + x')/2 - c·(v + v')/2)
-//! x' = x + h·(v + v')/2
-//! ```
-//!
-//! Solved for the impulse `λ = (v' - v)/W` on `b` (and `-λ` on `a`):
+//! Springs are integrated on the relative coordinate `x` (stretch) and
+//! velocity `v` along the spring's axis, with `W = w_a + w_b` the summed
+//! inverse masses, by the θ-method:
 //!
 //! ```text
-//! g = h·(k·h/4 + c/2)
-//! λ = -(2·g·v + h·k·x) / (1 + W·g)          (the divisor is ≥ 1: never zero)
+//! v' = v − h·W·(k·x_θ + c·v_θ),   x' = x + h·v_θ,
+//! v_θ = (1−θ)·v + θ·v',            x_θ = x + θ·h·v_θ
+//! ⇒ λ = (v' − v)/W = −(g·v + h·k·x) / (1 + W·θ·g),   g = h·(k·θ·h + c)
 //! ```
 //!
-//! Why this one: for an undamped spring the trapezoidal map conserves
-//! `k·x² + v²/W` exactly (its eigenvalues lie on the unit circle for every
-//! `ω·h`), so a stiff spring (`ω·h = 10`) can never gain energy or grow its
-//! amplitude — explicit Euler explodes there. Unlike implicit Euler, it
-//! has no numerical damping, so a resolved spring (`ω·h = 0.1`) keeps its
-//! amplitude; its period error is `1 - ω·h / (2·atan(ω·h/2)) ≈ (ω·h)²/12`
-//! = 0.08 % at `ω·h = 0.1`. With damping `c = 2ζω/W` the decay rate is also
-//! second-order accurate.
+//! (the divisor is ≥ 1: never zero). The blend is
+//! `θ = 1/2 + min(1/2, (ω·h)⁴/32)` with `(ω·h)² = k·W·h²`:
+//!
+//! * A resolved spring (`ω·h = 0.1`) is integrated by the trapezoidal rule
+//!   (θ = 1/2 + 3e-6): the energy `k·x² + v²/W` is conserved up to a
+//!   damping of ~6e-8 per step (amplitude −0.04 % after 100 periods), and
+//!   the period error is `ω·h/(2·atan(ω·h/2)) − 1 ≈ (ω·h)²/12` = 0.08 %.
+//!   Implicit Euler (θ = 1) would lose 27 % of the amplitude per period here.
+//! * A stiff spring (`ω·h = 10`) is integrated by implicit Euler (θ = 1):
+//!   unconditionally stable, and the mode the step cannot resolve is damped
+//!   out within a few steps instead of ringing at the Nyquist rate. Explicit
+//!   Euler explodes here (its amplification is √(1 + (ω·h)²) = 10 per step).
+//! * For every θ ≥ 1/2 the scheme never gains energy, so the amplitude of a
+//!   spring released from rest never exceeds its initial stretch.
+//! * With damping `c = 2ζω/W`, the decay rate is second-order accurate
+//!   while the spring is resolved.
 //!
 //! The engine integrates positions from end-of-step velocities
-//! (`x' = x + h·v'`), so to get `x + h·(v + v')/2` the spring's velocity
-//! change `Δv` is also recorded and `-h·Δv/2` is added to the displacement.
+//! (`x' = x + h·v'`), so the `(1−θ)·Δv` share of the spring's velocity
+//! change is recorded and `h` times it subtracted from the displacement.
 //!
 //! # Ropes
 //!

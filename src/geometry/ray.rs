@@ -80,7 +80,10 @@ impl<S: Scalar> Ray<S> {
         }
         // |component| ≤ scale, so both quotients are in [-1, 1], and the
         // larger one is exactly ±1.
-        let w = Vec2::new(div_nearest(direction.x, scale), div_nearest(direction.y, scale));
+        let w = Vec2::new(
+            div_nearest(direction.x, scale),
+            div_nearest(direction.y, scale),
+        );
         let direction = unit_of_max_normed(w)?;
         Some(Ray {
             origin,

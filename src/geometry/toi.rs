@@ -36,7 +36,10 @@
 //!   convention). Circle–circle: along the line of centres. Box–box: the
 //!   axis of the faces that meet, `±X` or `±Y`; when both axes meet at the
 //!   same instant (corner against corner), the **y** axis (the module's tie
-//!   rule). Circle–box: a face normal `±X`/`±Y` when the circle meets a
+//!   rule). The tie is decided exactly for the motion direction `u` below,
+//!   which is exact when `|d.x| = |d.y|` or when the smaller component
+//!   divided by the larger is representable; otherwise `u` is rounded by an
+//!   ulp and so is which of two almost simultaneous contacts comes first. Circle–box: a face normal `±X`/`±Y` when the circle meets a
 //!   face, and the direction from the circle's centre to the box's corner
 //!   when it meets a corner.
 //! * [`Toi::Miss`]: they do not touch during the step (`t ∈ [0, 1]`),

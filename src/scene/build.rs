@@ -5,9 +5,11 @@
 //! so the built world is the same on every machine.
 
 use super::{
-    Generator, MAX_SCENE_BODIES, Scene, SceneBody, SceneError, SceneKind, SceneMaterial, SceneShape,
+    Generator, MAX_SCENE_BODIES, Scene, SceneAnchor, SceneBody, SceneConstraint, SceneError,
+    SceneKind, SceneMaterial, SceneShape,
 };
-use crate::dynamics::BodyDef;
+use crate::constraints::{Anchor, Constraint};
+use crate::dynamics::{BodyDef, BodyId};
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2};
 use crate::world::{World, WorldSettings};
@@ -80,6 +82,7 @@ impl Generator {
                 u64::from(columns).saturating_mul(u64::from(rows))
             }
             Generator::Walls { .. } => 4,
+            Generator::Chain { segments, .. } => u64::from(segments),
         }
     }
 }
@@ -145,18 +148,43 @@ impl Scene {
                 what: "settings".to_owned(),
                 error,
             })?;
+        let mut ids = Vec::new();
         for (i, body) in self.bodies.iter().enumerate() {
             let what = || format!("body {i}");
-            add_scene_body(&mut world, body, &what)?;
+            ids.push(add_scene_body(&mut world, body, &what)?);
         }
         for (g, generator) in self.generators.iter().enumerate() {
             let what = || format!("generator {g}");
+            let first = ids.len();
             for def in generator.defs::<S>(&what)? {
-                world.add_body(def).map_err(|error| SceneError::World {
-                    what: what(),
-                    error,
-                })?;
+                ids.push(
+                    world
+                        .add_body(def)
+                        .map_err(|error| SceneError::World { what: what(), error })?,
+                );
             }
+            if let Generator::Chain {
+                pivot,
+                segment_length,
+                ..
+            } = *generator
+            {
+                let length: S = num(segment_length, &what)?;
+                let mut previous = Anchor::Point(pair(pivot, &what)?);
+                for &id in &ids[first..] {
+                    world
+                        .add_constraint(Constraint::rope(previous, Anchor::Body(id), length))
+                        .map_err(|error| SceneError::World { what: what(), error })?;
+                    previous = Anchor::Body(id);
+                }
+            }
+        }
+        for (c, constraint) in self.constraints.iter().enumerate() {
+            let what = || format!("constraint {c}");
+            let built = scene_constraint::<S>(constraint, &ids, &what)?;
+            world
+                .add_constraint(built)
+                .map_err(|error| SceneError::World { what: what(), error })?;
         }
         Ok(world)
     }
@@ -166,17 +194,80 @@ fn add_scene_body<S: Scalar>(
     world: &mut World<S>,
     body: &SceneBody,
     what: &dyn Fn() -> String,
-) -> Result<(), SceneError> {
+) -> Result<BodyId, SceneError> {
     let d = def(body.kind, shape(&body.shape, what)?, &body.material, what)?
         .position(pair(body.position, what)?)
         .velocity(pair(body.velocity, what)?);
     world
         .add_body(d)
-        .map(|_| ())
-        .map_err(|error| SceneError::World {
-            what: what(),
-            error,
-        })
+        .map_err(|error| SceneError::World { what: what(), error })
+}
+
+fn anchor<S: Scalar>(
+    a: &SceneAnchor,
+    ids: &[BodyId],
+    what: &dyn Fn() -> String,
+) -> Result<Anchor<S>, SceneError> {
+    let body = |i: u32| {
+        ids.get(i as usize)
+            .copied()
+            .ok_or_else(|| SceneError::BadReference {
+                what: what(),
+                index: i,
+                bodies: ids.len(),
+            })
+    };
+    Ok(match *a {
+        SceneAnchor::Point(p) => Anchor::Point(pair(p, what)?),
+        SceneAnchor::Body(i) => Anchor::Body(body(i)?),
+        SceneAnchor::BodyOffset(i, offset) => Anchor::BodyOffset(body(i)?, pair(offset, what)?),
+    })
+}
+
+fn scene_constraint<S: Scalar>(
+    c: &SceneConstraint,
+    ids: &[BodyId],
+    what: &dyn Fn() -> String,
+) -> Result<Constraint<S>, SceneError> {
+    Ok(match *c {
+        SceneConstraint::BendySpring {
+            a,
+            b,
+            stiffness,
+            damping,
+            rest_offset,
+        } => Constraint::bendy_spring(
+            anchor(&a, ids, what)?,
+            anchor(&b, ids, what)?,
+            pair(stiffness, what)?,
+            num(damping, what)?,
+        )
+        .with_rest_offset(pair(rest_offset, what)?),
+        SceneConstraint::RadialSpring {
+            pivot,
+            body,
+            rest_length,
+            stiffness,
+            damping,
+        } => Constraint::radial_spring(
+            anchor(&pivot, ids, what)?,
+            anchor(&body, ids, what)?,
+            num(rest_length, what)?,
+            num(stiffness, what)?,
+            num(damping, what)?,
+        ),
+        SceneConstraint::Rope {
+            a,
+            b,
+            length,
+            restitution,
+        } => Constraint::rope(
+            anchor(&a, ids, what)?,
+            anchor(&b, ids, what)?,
+            num(length, what)?,
+        )
+        .with_restitution(num(restitution, what)?),
+    })
 }
 
 impl Generator {
@@ -264,6 +355,31 @@ impl Generator {
                                 .velocity(velocity),
                         );
                     }
+                }
+            }
+            Generator::Chain {
+                pivot,
+                direction,
+                segments,
+                segment_length,
+                link_radius,
+                material,
+            } => {
+                let pivot: Vec2<S> = pair(pivot, what)?;
+                let direction = pair::<S>(direction, what)?.try_normalize().ok_or_else(|| {
+                    SceneError::Invalid {
+                        what: what(),
+                        reason: "chain direction must not be zero",
+                    }
+                })?;
+                let length: S = num(segment_length, what)?;
+                let radius: S = num(link_radius, what)?;
+                for i in 1..=i32::try_from(segments).unwrap_or(i32::MAX) {
+                    let position = pivot + direction.scale(length.mul_int(i));
+                    out.push(
+                        def(SceneKind::Dynamic, Shape::circle(radius), &material, what)?
+                            .position(position),
+                    );
                 }
             }
             Generator::Walls {

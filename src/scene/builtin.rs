@@ -13,6 +13,8 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("balls", include_str!("../../scenes/balls.ron")),
     ("bullets", include_str!("../../scenes/bullets.ron")),
     ("mixed", include_str!("../../scenes/mixed.ron")),
+    ("springs", include_str!("../../scenes/springs.ron")),
+    ("rope", include_str!("../../scenes/rope.ron")),
 ];
 
 /// The built-in scene called `name`.

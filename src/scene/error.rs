@@ -16,10 +16,26 @@ pub enum SceneError {
         /// Where (e.g. "body 3 position").
         what: String,
     },
+    /// A value the scene format does not allow (e.g. a zero direction).
+    Invalid {
+        /// Where.
+        what: String,
+        /// Why.
+        reason: &'static str,
+    },
     /// More bodies than [`super::MAX_SCENE_BODIES`].
     TooManyBodies(u64),
     /// No built-in scene has this name and no such file exists.
     Unknown(String),
+    /// A constraint names a body index the scene does not create.
+    BadReference {
+        /// Which constraint.
+        what: String,
+        /// The index given.
+        index: u32,
+        /// How many bodies the scene creates.
+        bodies: usize,
+    },
     /// The world refused a body or the settings.
     World {
         /// Which body ("body 3", "generator 1 body 17", "settings").
@@ -35,6 +51,7 @@ impl fmt::Display for SceneError {
             SceneError::Io(e) => write!(f, "cannot read scene: {e}"),
             SceneError::Parse(e) => write!(f, "invalid scene file: {e}"),
             SceneError::NotFinite { what } => write!(f, "{what}: number is not finite"),
+            SceneError::Invalid { what, reason } => write!(f, "{what}: {reason}"),
             SceneError::TooManyBodies(n) => write!(
                 f,
                 "scene would create {n} bodies; at most {} are allowed",
@@ -48,6 +65,10 @@ impl fmt::Display for SceneError {
                     .map(|(n, _)| *n)
                     .collect::<Vec<_>>()
                     .join(", ")
+            ),
+            SceneError::BadReference { what, index, bodies } => write!(
+                f,
+                "{what}: body index {index} does not exist (the scene creates {bodies} bodies, indices 0..{bodies})"
             ),
             SceneError::World { what, error } => write!(f, "{what}: {error}"),
         }

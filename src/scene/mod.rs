@@ -46,6 +46,67 @@ pub struct Scene {
     /// Generated groups of bodies, added after `bodies`, in order.
     #[serde(default)]
     pub generators: Vec<Generator>,
+    /// Constraints between the scene's bodies, referenced by creation index
+    /// (`bodies` first, then each generator's bodies in order).
+    #[serde(default)]
+    pub constraints: Vec<SceneConstraint>,
+}
+
+/// A constraint end in a scene file.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum SceneAnchor {
+    /// A fixed world point.
+    Point((f64, f64)),
+    /// The body with this creation index.
+    Body(u32),
+    /// The body with this creation index, plus an offset.
+    BodyOffset(u32, (f64, f64)),
+}
+
+/// A constraint in a scene file (see [`crate::Constraint`]).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum SceneConstraint {
+    /// A bendy spring pulling `b` toward `a + rest_offset`.
+    BendySpring {
+        /// Anchor pulled toward.
+        a: SceneAnchor,
+        /// Pulled anchor.
+        b: SceneAnchor,
+        /// Stiffness per axis.
+        stiffness: (f64, f64),
+        /// Damping.
+        #[serde(default)]
+        damping: f64,
+        /// Rest offset of `b` from `a`.
+        #[serde(default)]
+        rest_offset: (f64, f64),
+    },
+    /// A radial spring.
+    RadialSpring {
+        /// Pivot.
+        pivot: SceneAnchor,
+        /// Body end.
+        body: SceneAnchor,
+        /// Rest length.
+        rest_length: f64,
+        /// Stiffness.
+        stiffness: f64,
+        /// Damping.
+        #[serde(default)]
+        damping: f64,
+    },
+    /// A rope.
+    Rope {
+        /// One end.
+        a: SceneAnchor,
+        /// Other end.
+        b: SceneAnchor,
+        /// Length.
+        length: f64,
+        /// Restitution.
+        #[serde(default)]
+        restitution: f64,
+    },
 }
 
 /// Optional overrides of the world settings; absent fields keep defaults.
@@ -193,6 +254,25 @@ pub enum Generator {
         #[serde(default)]
         seed: u64,
         /// Material.
+        #[serde(default)]
+        material: SceneMaterial,
+    },
+    /// A chain hanging from a fixed `pivot`: `segments` circular links of
+    /// radius `link_radius`, each `segment_length` further along
+    /// `direction` (normalised at build time), joined by ropes (the first to
+    /// the pivot).
+    Chain {
+        /// Fixed point the chain hangs from.
+        pivot: (f64, f64),
+        /// Direction of the chain from the pivot.
+        direction: (f64, f64),
+        /// Number of links.
+        segments: u32,
+        /// Rope length between links.
+        segment_length: f64,
+        /// Radius of each link.
+        link_radius: f64,
+        /// Material of the links.
         #[serde(default)]
         material: SceneMaterial,
     },

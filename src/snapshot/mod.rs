@@ -170,3 +170,6 @@ impl<S: Scalar> World<S> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests;

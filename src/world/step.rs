@@ -278,10 +278,10 @@ impl<S: Scalar> World<S> {
         for (i, slot) in self.slots.iter().enumerate() {
             let Some(body) = &slot.body else { continue };
             if body.is_moving() {
-                // x' = x + h·v' − h·Δv_spring/2: springs get the trapezoidal
+                // x' = x + h·v' − h·(1−θ)·Δv_spring: springs get the θ-method
                 // position rule (see crate::constraints).
-                let spring_half = scratch.spring_dv[i].scale(h).scale(S::ONE.half());
-                scratch.displacements[i] = scratch.velocities[i].scale(h) - spring_half;
+                let lagging = scratch.spring_dv[i].scale(h);
+                scratch.displacements[i] = scratch.velocities[i].scale(h) - lagging;
             }
         }
         for &(a, b) in &scratch.pairs {

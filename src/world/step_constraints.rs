@@ -7,7 +7,7 @@
 
 use super::World;
 use crate::constraints::{Anchor, Constraint};
-use crate::constraints::spring::trapezoidal_impulse;
+use crate::constraints::spring::{spring_impulse, theta_for};
 use crate::dynamics::contact_solver::ContactConstraint;
 use crate::math::{Scalar, Vec2};
 
@@ -92,7 +92,7 @@ impl<S: Scalar> World<S> {
             }
             let relative_velocity = sb.velocity - sa.velocity;
             // λ per unit of inverse mass: the impulse on b (−λ on a).
-            let impulse = match constraint {
+            let (impulse, lag) = match constraint {
                 Constraint::BendySpring {
                     rest_offset,
                     stiffness,
@@ -100,10 +100,13 @@ impl<S: Scalar> World<S> {
                     ..
                 } => {
                     let stretch = sb.position - sa.position - rest_offset;
-                    Vec2::new(
-                        trapezoidal_impulse(stretch.x, relative_velocity.x, w, stiffness.x, damping, h),
-                        trapezoidal_impulse(stretch.y, relative_velocity.y, w, stiffness.y, damping, h),
-                    )
+                    let (tx, ty) = (theta_for(stiffness.x, w, h), theta_for(stiffness.y, w, h));
+                    let lambda = Vec2::new(
+                        spring_impulse(stretch.x, relative_velocity.x, w, stiffness.x, damping, h, tx),
+                        spring_impulse(stretch.y, relative_velocity.y, w, stiffness.y, damping, h, ty),
+                    );
+                    // Share of Δv that positions do not see: (1 − θ) per axis.
+                    (lambda, Vec2::new(S::ONE.sub(tx), S::ONE.sub(ty)))
                 }
                 Constraint::RadialSpring {
                     rest_length,
@@ -118,7 +121,12 @@ impl<S: Scalar> World<S> {
                         .unwrap_or((Vec2::Y, S::ZERO));
                     let stretch = length.sub(rest_length);
                     let v = relative_velocity.dot(axis);
-                    axis.scale(trapezoidal_impulse(stretch, v, w, stiffness, damping, h))
+                    let theta = theta_for(stiffness, w, h);
+                    let lag = S::ONE.sub(theta);
+                    (
+                        axis.scale(spring_impulse(stretch, v, w, stiffness, damping, h, theta)),
+                        Vec2::new(lag, lag),
+                    )
                 }
                 Constraint::Rope { .. } => continue,
             };
@@ -131,7 +139,9 @@ impl<S: Scalar> World<S> {
                 let dv = if sign_b { dv } else { -dv };
                 let i = state.slot as usize;
                 scratch.velocities[i] += dv;
-                scratch.spring_dv[i] += dv;
+                // Positions see only θ of the change: record the (1 − θ)
+                // share to subtract (h times it) from the displacement.
+                scratch.spring_dv[i] += dv.mul_elements(lag);
             }
         }
     }
