@@ -122,7 +122,12 @@ impl Diff {
             y.position_iterations,
         );
         self.plain(p, "settings.substeps", x.substeps, y.substeps);
-        self.plain(p, "settings.sleep_enabled", x.sleep_enabled, y.sleep_enabled);
+        self.plain(
+            p,
+            "settings.sleep_enabled",
+            x.sleep_enabled,
+            y.sleep_enabled,
+        );
         for (name, u, v) in [
             (
                 "settings.sleep_linear_threshold",
@@ -141,7 +146,11 @@ impl Diff {
                 x.position_correction,
                 y.position_correction,
             ),
-            ("settings.max_correction", x.max_correction, y.max_correction),
+            (
+                "settings.max_correction",
+                x.max_correction,
+                y.max_correction,
+            ),
             (
                 "settings.speculative_margin",
                 x.speculative_margin,
@@ -151,7 +160,12 @@ impl Diff {
         ] {
             self.scalar(p, name, u, v);
         }
-        self.vec2(p, "settings.bounds.center", x.bounds.center, y.bounds.center);
+        self.vec2(
+            p,
+            "settings.bounds.center",
+            x.bounds.center,
+            y.bounds.center,
+        );
         self.vec2(
             p,
             "settings.bounds.half_extents",
@@ -163,10 +177,7 @@ impl Diff {
     fn bodies<S: Scalar>(&mut self, a: &World<S>, b: &World<S>) {
         let p = "bodies";
         if a.slots.len() != b.slots.len() {
-            self.push(
-                p,
-                format!("{} slots vs {}", a.slots.len(), b.slots.len()),
-            );
+            self.push(p, format!("{} slots vs {}", a.slots.len(), b.slots.len()));
         }
         for (index, (sa, sb)) in (0u32..).zip(a.slots.iter().zip(&b.slots)) {
             match (&sa.body, &sb.body) {
@@ -192,10 +203,16 @@ impl Diff {
             }
         }
         for (index, slot) in (0u32..).zip(&a.slots).skip(b.slots.len()) {
-            self.push(p, format!("slot {index} (gen {}) only in A", slot.generation));
+            self.push(
+                p,
+                format!("slot {index} (gen {}) only in A", slot.generation),
+            );
         }
         for (index, slot) in (0u32..).zip(&b.slots).skip(a.slots.len()) {
-            self.push(p, format!("slot {index} (gen {}) only in B", slot.generation));
+            self.push(
+                p,
+                format!("slot {index} (gen {}) only in B", slot.generation),
+            );
         }
     }
 

@@ -17,6 +17,7 @@
 
 mod collision;
 pub mod constraints;
+pub mod determinism;
 pub mod diff;
 pub mod dynamics;
 pub mod geometry;

@@ -38,9 +38,9 @@ use proptest::test_runner::TestCaseError;
 
 /// Cases per property: 16× proptest's default of 256. One case is a few
 /// hundred scalar operations plus 33 sampled points, so all the properties
-/// of this file take well under a second, in release and in the (opt-level
-/// 1) debug test profile alike. (They have also been run with 200 000 cases
-/// each.)
+/// of this file take well under a second, in release and in the debug test
+/// profile (opt-level 1) alike. They have also been run with 200 000 cases
+/// each.
 const CASES: u32 = 4096;
 
 /// One `Fx` ulp.

@@ -36,6 +36,7 @@ fn run_twice<S: Scene>(name: &str, mut a_scene: S, mut b_scene: S, ticks: u64) -
         "{name}: hashes differ before the first step"
     );
     let mut clone: Option<World> = None;
+    let (mut applied, mut refused) = (0usize, 0usize);
     for tick in 0..ticks {
         let ca = a_scene.commands(tick, &a);
         let cb = b_scene.commands(tick, &b);
@@ -45,6 +46,8 @@ fn run_twice<S: Scene>(name: &str, mut a_scene: S, mut b_scene: S, ticks: u64) -
         );
         let ra = a.step_with(&ca);
         let rb = b.step_with(&cb);
+        applied += ra.iter().filter(|r| r.is_ok()).count();
+        refused += ra.iter().filter(|r| r.is_err()).count();
         assert_eq!(
             ra,
             rb,
@@ -74,7 +77,9 @@ fn run_twice<S: Scene>(name: &str, mut a_scene: S, mut b_scene: S, ticks: u64) -
         }
     }
     let h = a.state_hash();
-    println!("determinism: {name}: {ticks} ticks identical, final hash {h:#018x}");
+    println!(
+        "determinism: {name}: {ticks} ticks identical ({applied} commands applied, {refused} refused), final hash {h:#018x}"
+    );
     h
 }
 

@@ -209,16 +209,6 @@ fn mass_ratio_case(gap: f64) {
             worst.1 = p2;
             worst_tick.1 = world.tick();
         }
-        assert!(
-            p1 < 0.01,
-            "gap {gap}: ground/light penetration {p1} at tick {}",
-            world.tick()
-        );
-        assert!(
-            p2 < 0.01,
-            "gap {gap}: light/heavy penetration {p2} at tick {}",
-            world.tick()
-        );
     }
     let (bl, bh) = (world.body(light).unwrap(), world.body(heavy).unwrap());
     let speed = |b: &Body| {

@@ -406,7 +406,10 @@ fn info_as<S: Scalar>(bytes: &[u8], kind: FileKind) -> Result<(), SnapshotError>
             );
             println!("  commands        {}", replay.commands().len());
             println!("  checkpoints     {}", replay.checkpoints().len());
-            println!("  final hash      0x{:016x} (recorded)", replay.final_hash());
+            println!(
+                "  final hash      0x{:016x} (recorded)",
+                replay.final_hash()
+            );
             println!("  initial world:");
             replay.initial().clone()
         }
@@ -457,7 +460,13 @@ fn diff(a: &Path, b: &Path, limit: usize) -> ExitCode {
         _ => fail(format!("{}: unknown scalar id {}", a.display(), header.scalar_id)))
 }
 
-fn diff_as<S: Scalar>(a: &Path, bytes_a: &[u8], b: &Path, bytes_b: &[u8], limit: usize) -> ExitCode {
+fn diff_as<S: Scalar>(
+    a: &Path,
+    bytes_a: &[u8],
+    b: &Path,
+    bytes_b: &[u8],
+    limit: usize,
+) -> ExitCode {
     let wa = match World::<S>::restore(bytes_a) {
         Ok(w) => w,
         Err(e) => return fail(format!("{}: {e}", a.display())),

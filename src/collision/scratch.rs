@@ -2,6 +2,7 @@
 //! steady state allocates nothing. Derived data: never part of the state.
 
 use super::broad_phase::Proxy;
+use super::contact_cache::CachedContact;
 use crate::constraints::rope_block::BlockScratch;
 use crate::dynamics::contact_solver::ContactConstraint;
 use crate::math::{Scalar, Vec2};
@@ -32,4 +33,10 @@ pub(crate) struct StepScratch<S: Scalar> {
     pub(crate) rope_groups: Vec<Vec<usize>>,
     /// Working memory of the block solver.
     pub(crate) rope_block: BlockScratch<S>,
+    /// Pairs touching before the tick (for contact events).
+    pub(crate) touching_before: Vec<(u32, u32)>,
+    /// The other half of the contact cache's double buffer.
+    pub(crate) contacts_next: Vec<CachedContact<S>>,
+    /// Per-island least sleep time.
+    pub(crate) island_time: Vec<S>,
 }

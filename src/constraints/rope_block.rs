@@ -76,7 +76,10 @@ fn shares_dynamic_body<S: Scalar>(p: &ContactConstraint<S>, q: &ContactConstrain
 /// `A_ij` for rows `p` and `q`.
 fn coupling<S: Scalar>(p: &ContactConstraint<S>, q: &ContactConstraint<S>) -> S {
     let ends = |c: &ContactConstraint<S>| {
-        [(c.a, c.inverse_mass_a, true), (c.b, c.inverse_mass_b, false)]
+        [
+            (c.a, c.inverse_mass_a, true),
+            (c.b, c.inverse_mass_b, false),
+        ]
     };
     let cos = p.normal.dot(q.normal);
     let mut sum = S::ZERO;
@@ -87,7 +90,11 @@ fn coupling<S: Scalar>(p: &ContactConstraint<S>, q: &ContactConstraint<S>) -> S 
         for (sq, _, neg_q) in ends(q) {
             if sp == sq {
                 let term = wp.mul(cos);
-                sum = if neg_p == neg_q { sum.add(term) } else { sum.sub(term) };
+                sum = if neg_p == neg_q {
+                    sum.add(term)
+                } else {
+                    sum.sub(term)
+                };
             }
         }
     }
@@ -231,7 +238,8 @@ pub(crate) fn solve_group_positions<S: Scalar>(
         let separation = row
             .separation
             .add((d[row.b as usize] - d[row.a as usize]).dot(row.normal));
-        beta.mul(separation.add(slop)).clamp(max_correction.neg(), S::ZERO)
+        beta.mul(separation.add(slop))
+            .clamp(max_correction.neg(), S::ZERO)
     };
     work.active.clear();
     work.active.extend(

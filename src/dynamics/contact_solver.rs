@@ -46,9 +46,47 @@ pub(crate) struct ContactConstraint<S: Scalar> {
     pub(crate) target_velocity: S,
     pub(crate) normal_impulse: S,
     pub(crate) tangent_impulse: S,
+    /// `w_a·n` and `w_b·n`, precomputed: the velocity change per unit of
+    /// normal impulse (and, turned a quarter, of friction impulse).
+    pub(crate) push_a: Vec2<S>,
+    pub(crate) push_b: Vec2<S>,
 }
 
 impl<S: Scalar> ContactConstraint<S> {
+    /// A row between slots `a` and `b` with normal `normal` (from a to b),
+    /// separation, inverse masses (`w_a + w_b > 0`), friction and
+    /// warm-start impulses; the target is set by
+    /// [`prepare_target`](Self::prepare_target).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn new(
+        a: u32,
+        b: u32,
+        normal: Vec2<S>,
+        separation: S,
+        inverse_mass_a: S,
+        inverse_mass_b: S,
+        friction: S,
+        normal_impulse: S,
+        tangent_impulse: S,
+    ) -> Self {
+        ContactConstraint {
+            a,
+            b,
+            normal,
+            separation,
+            inverse_mass_a,
+            inverse_mass_b,
+            // The caller guarantees a positive sum: no division by zero.
+            effective_mass: S::ONE.div(inverse_mass_a.add(inverse_mass_b)),
+            friction,
+            target_velocity: S::ZERO,
+            normal_impulse,
+            tangent_impulse,
+            push_a: normal.scale(inverse_mass_a),
+            push_b: normal.scale(inverse_mass_b),
+        }
+    }
+
     /// Sets the velocity target from the separation, the approach speed
     /// at the start of the substep and the restitution.
     pub(crate) fn prepare_target(
@@ -82,20 +120,27 @@ pub(crate) fn warm_start<S: Scalar>(
     velocities: &mut [Vec2<S>],
 ) {
     for c in constraints {
-        let tangent = c.normal.perp();
-        let impulse = c.normal.scale(c.normal_impulse) + tangent.scale(c.tangent_impulse);
-        apply(c, impulse, velocities);
+        apply_row(c, c.normal_impulse, c.tangent_impulse, velocities);
     }
 }
 
+/// Applies normal impulse `dn` and friction impulse `dt` (along
+/// `perp(n)`): `Δv_b = w_b·(n·dn + perp(n)·dt)`, `Δv_a = −w_a·(…)`.
 #[inline]
-fn apply<S: Scalar>(c: &ContactConstraint<S>, impulse: Vec2<S>, velocities: &mut [Vec2<S>]) {
-    let (ia, ib) = (c.a as usize, c.b as usize);
+fn apply_row<S: Scalar>(c: &ContactConstraint<S>, dn: S, dt: S, velocities: &mut [Vec2<S>]) {
+    // w·(n·dn + perp(n)·dt) = (p.x·dn − p.y·dt, p.y·dn + p.x·dt) for p = w·n,
+    // each component one exact two-product sum, rounded once.
+    let delta = |p: Vec2<S>| {
+        Vec2::new(
+            S::mul_sub_mul(p.x, dn, p.y, dt),
+            S::mul_add_mul(p.y, dn, p.x, dt),
+        )
+    };
     if c.inverse_mass_a.is_positive() {
-        velocities[ia] -= impulse.scale(c.inverse_mass_a);
+        velocities[c.a as usize] -= delta(c.push_a);
     }
     if c.inverse_mass_b.is_positive() {
-        velocities[ib] += impulse.scale(c.inverse_mass_b);
+        velocities[c.b as usize] += delta(c.push_b);
     }
 }
 
@@ -111,34 +156,38 @@ pub(crate) fn solve_velocities<S: Scalar>(
 
 /// One sequential-impulse update of one row: friction (bounded by the
 /// normal impulse of the last pass), then the normal impulse.
+///
+/// A friction impulse changes the relative velocity only along `perp(n)`
+/// (both bodies' changes are multiples of `perp(n)`), so the normal
+/// velocity is read once, before either update.
 #[inline]
-pub(crate) fn solve_velocity_row<S: Scalar>(c: &mut ContactConstraint<S>, velocities: &mut [Vec2<S>]) {
-    let (ia, ib) = (c.a as usize, c.b as usize);
-    let tangent = c.normal.perp();
+pub(crate) fn solve_velocity_row<S: Scalar>(
+    c: &mut ContactConstraint<S>,
+    velocities: &mut [Vec2<S>],
+) {
+    let relative = velocities[c.b as usize] - velocities[c.a as usize];
+    let vn = relative.dot(c.normal);
 
-    let relative = velocities[ib] - velocities[ia];
-    let vt = relative.dot(tangent);
     let limit = c.friction.mul(c.normal_impulse);
     let old_t = c.tangent_impulse;
-    c.tangent_impulse = old_t
-        .sub(vt.mul(c.effective_mass))
-        .clamp(limit.neg(), limit);
-    let dt_impulse = c.tangent_impulse.sub(old_t);
-    if dt_impulse != S::ZERO {
-        let snapshot = *c;
-        apply(&snapshot, tangent.scale(dt_impulse), velocities);
-    }
+    let dt = if limit == S::ZERO && old_t == S::ZERO {
+        S::ZERO
+    } else {
+        // v_t = relative · perp(n) = n × relative.
+        let vt = c.normal.cross(relative);
+        c.tangent_impulse = old_t
+            .sub(vt.mul(c.effective_mass))
+            .clamp(limit.neg(), limit);
+        c.tangent_impulse.sub(old_t)
+    };
 
     // Normal: drive v_n to at least the target, accumulated λ ≥ 0.
-    let relative = velocities[ib] - velocities[ia];
-    let vn = relative.dot(c.normal);
     let old_n = c.normal_impulse;
     let lambda = c.target_velocity.sub(vn).mul(c.effective_mass);
     c.normal_impulse = old_n.add(lambda).max(S::ZERO);
     let dn = c.normal_impulse.sub(old_n);
-    if dn != S::ZERO {
-        let snapshot = *c;
-        apply(&snapshot, c.normal.scale(dn), velocities);
+    if dn != S::ZERO || dt != S::ZERO {
+        apply_row(c, dn, dt, velocities);
     }
 }
 

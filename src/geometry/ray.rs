@@ -1,16 +1,6 @@
 //! [`Ray`] and [`RayHit`]: the input and output of the ray casts
-//! ([`ray_circle`](super::ray_circle), [`ray_aabb`](super::ray_aabb)).
-//!
-//! # Conventions shared by every ray cast
-//!
-//! * Shapes are **solid** and closed. A ray whose origin is inside a shape
-//!   or on its boundary hits it at distance 0: `point` is the origin and
-//!   `normal` is `-direction` (there is no surface crossing to take a normal
-//!   from; `-direction` is a unit vector that points back along the ray).
-//! * A hit counts when its distance is at most `max_distance` (inclusive).
-//! * A ray starting outside a shape and pointing away from it misses.
-//! * Results are deterministic: the same inputs give the same bits on every
-//!   target (for the fixed-point scalars).
+//! ([`ray_circle`](super::ray_circle), [`ray_aabb`](super::ray_aabb)). The
+//! conventions shared by every ray cast are documented on [`Ray`].
 
 use serde::{Deserialize, Serialize};
 
@@ -24,6 +14,19 @@ use crate::math::{Scalar, Vec2, WideScalar};
 /// are public for reading; a ray built by hand should keep `direction`
 /// unit length (the casts measure distance in units of `|direction|`) and
 /// `max_distance` non-negative (a negative one never hits anything).
+///
+/// # Conventions shared by every ray cast
+///
+/// * Shapes are **solid** and closed. A ray whose origin is inside a shape
+///   or on its boundary hits it at distance 0: `point` is the origin and
+///   `normal` is `-direction` (there is no surface crossing to take a normal
+///   from; `-direction` is a unit vector that points back along the ray).
+/// * A hit counts when its distance is at most `max_distance` (inclusive).
+/// * A ray starting outside a shape and pointing away from it misses.
+/// * Distances are measured in units of `|direction|`, which [`Ray::new`]
+///   makes 1 within 1.21 ulps: a relative error of 2.8e-10 for `Fx`.
+/// * Results are deterministic: the same inputs give the same bits on every
+///   target (for the fixed-point scalars).
 ///
 /// Documented range (`Fx`): coordinates within ±[`WORLD_LIMIT`] and
 /// `max_distance ≤ 2¹⁷`, which keeps every hit point inside the scalar's

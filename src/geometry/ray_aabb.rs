@@ -50,6 +50,16 @@ use crate::math::Scalar;
 ///
 /// A negative half extent behaves as its absolute value.
 ///
+/// # Exactness
+///
+/// Every decision (hit or miss, which face, within `max_distance` or not)
+/// is exact: the slab test compares its fractions by cross-multiplying in
+/// the wide type and divides only once, for the reported distance, after
+/// proving it at most `max_distance` (so a tiny direction component can
+/// never make a saturated quotient look like a hit). A zero direction
+/// component is never divided by. The distance is the exact quotient
+/// truncated to an ulp, and the point lies exactly on the entered face.
+///
 /// ```
 /// use clockwork2d::prelude::*;
 /// let b = Aabb::new(Vec2::new(fx(5.0), fx(0.0)), Vec2::new(fx(1.0), fx(2.0)));

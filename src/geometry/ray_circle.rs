@@ -17,15 +17,7 @@
 //! within the world bounds) is exact. The derivation and the error analysis
 //! are next to the solver in `sweep.rs`.
 //!
-//! # Accuracy (`Fx`, inputs within the world bounds)
-//!
-//! * The hit point is within about 4 ulps (`1e-9`) of the circle, at any
-//!   distance and even for grazing rays.
-//! * The distance is as well conditioned as the geometry allows: a few ulps
-//!   for a head-on hit, growing like `3 r ulp / (2 √(r² − h²))` as the
-//!   ray's distance `h` from the centre approaches `r` (a grazing ray).
-//!   Near-tangent rays may be hit in `Fx` and missed in `f64` or the other
-//!   way round.
+//! The accuracy is stated on [`ray_circle`].
 
 use super::Circle;
 use super::ray::{Ray, RayHit, ray_hit_from_cast};
@@ -46,6 +38,18 @@ use crate::math::Scalar;
 ///   (`(point − center) / r`).
 ///
 /// A negative radius behaves as its absolute value.
+///
+/// # Accuracy (`Fx`, inputs within the world bounds)
+///
+/// * The hit point is within about 4 ulps (`1e-9`) of the circle, at any
+///   distance and even for grazing rays (the quadratic is solved from a
+///   point near the circle and refined by a Newton step on the exact
+///   residual).
+/// * The distance is as well conditioned as the geometry allows: a few ulps
+///   for a head-on hit, growing like `r ulp / √(r² − h²)` as the ray's
+///   distance `h` from the centre approaches `r` (a grazing ray).
+///   Near-tangent rays may be hit in `Fx` and missed in `f64` or the other
+///   way round; a miss passes at least `r − 3 ulps` from the centre.
 ///
 /// ```
 /// use clockwork2d::prelude::*;
@@ -89,9 +93,8 @@ pub fn ray_circle<S: Scalar>(ray: &Ray<S>, circle: &Circle<S>) -> Option<RayHit<
 /// (or the ray's direction is zero).
 ///
 /// Each root's point `origin + t·direction` is on the circle within the
-/// accuracy stated in the [module docs](self) (the roots are solved from a
-/// point near the foot of the perpendicular, so this holds for far circles
-/// too).
+/// accuracy stated on [`ray_circle`] (plus a few ulps for forming the
+/// point), for far circles too.
 ///
 /// ```
 /// use clockwork2d::prelude::*;

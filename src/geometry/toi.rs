@@ -26,36 +26,8 @@
 //! (`L = 0`) is never divided by: the answer is then `Overlapping` or
 //! `Miss`.
 //!
-//! # Outcomes and conventions
-//!
-//! * [`Toi::Overlapping`]: the shapes overlap **or touch** at `t = 0` (the
-//!   shapes are closed), whatever the motion; the contact solver handles
-//!   it.
-//! * [`Toi::Hit`]: the first `t` at which they touch, with the unit normal
-//!   **from `a` to `b`** at that moment (the geometry module's contact
-//!   convention). Circle–circle: along the line of centres. Box–box: the
-//!   axis of the faces that meet, `±X` or `±Y`; when both axes meet at the
-//!   same instant (corner against corner), the **y** axis (the module's tie
-//!   rule). The tie is decided exactly for the motion direction `u` below,
-//!   which is exact when `|d.x| = |d.y|` or when the smaller component
-//!   divided by the larger is representable; otherwise `u` is rounded by an
-//!   ulp and so is which of two almost simultaneous contacts comes first. Circle–box: a face normal `±X`/`±Y` when the circle meets a
-//!   face, and the direction from the circle's centre to the box's corner
-//!   when it meets a corner.
-//! * [`Toi::Miss`]: they do not touch during the step (`t ∈ [0, 1]`),
-//!   including shapes moving apart or side by side.
-//! * Grazing contact (touching at a single instant without overlapping)
-//!   counts as a hit.
-//!
-//! # Accuracy (`Fx`, inputs within the world bounds)
-//!
-//! `t` has 32 fraction bits, so the relative position it stands for,
-//! `t·d`, is resolved to about `|d|·2⁻³²`; rounding `u` adds at most
-//! `L·2⁻³²`. The shapes' distance at the reported `t` is therefore within
-//! about `(2|d| + 16)` ulps of zero (`|d|` in units): for a displacement of
-//! 100 units, about 5e-8. Near-grazing contacts have ill-conditioned `t`
-//! (as in the ray casts), but the contact position stays within that
-//! bound.
+//! The outcomes, the normal conventions and the accuracy are documented on
+//! [`Toi`].
 
 use super::sweep::{Cast, cast_box, cast_circle, cast_rounded_box};
 use super::{Aabb, Circle};
@@ -63,6 +35,45 @@ use crate::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// The outcome of a time-of-impact query.
+///
+/// The queries take each shape's displacement over the step (`da`, `db`,
+/// linear motion) and work with the relative displacement `d = da − db`,
+/// cast along the direction `u = d / L`, `L = max(|d.x|, |d.y|)` (see
+/// `toi.rs` for the maths).
+///
+/// # Outcomes and conventions
+///
+/// * [`Toi::Overlapping`]: the shapes overlap **or touch** at `t = 0` (the
+///   shapes are closed), whatever the motion; the contact solver handles
+///   it. Decided exactly.
+/// * [`Toi::Hit`]: the first `t` at which they touch, with the unit normal
+///   **from `a` to `b`** at that moment (the geometry module's contact
+///   convention).
+///   - Circle–circle: along the line of centres.
+///   - Box–box: the axis of the faces that meet, `±X` or `±Y`. When both
+///     axes meet at the same instant (corner against corner), the **y**
+///     axis (the module's tie rule). The tie is decided exactly for `u`,
+///     which is exact when `|d.x| = |d.y|` or when the smaller component
+///     over the larger is representable; otherwise `u` is rounded by an ulp
+///     and so is the order of two almost simultaneous contacts.
+///   - Circle–box: a face normal `±X`/`±Y` when the circle meets a face,
+///     and the unit vector from the circle's centre to the box's corner when
+///     it meets a corner (at the face/corner boundary the two agree).
+/// * [`Toi::Miss`]: they do not touch during the step (`t ∈ [0, 1]`),
+///   including shapes moving apart or side by side and zero relative
+///   motion.
+/// * Grazing contact (touching at a single instant without overlapping)
+///   counts as a hit, and so does contact exactly at `t = 1`.
+///
+/// # Accuracy (`Fx`, inputs within the world bounds)
+///
+/// `t` has 32 fraction bits, so the relative position it stands for,
+/// `t·d`, is resolved to about `|d|·2⁻³²`; rounding `u` adds at most
+/// `L·2⁻³²`; the cast itself is within 4 ulps of the shape. The shapes'
+/// separation at the reported `t` is therefore within about `(2|d| + 4)`
+/// ulps of zero (`|d|` in units): for a displacement of 100 units, about
+/// 5e-8. Near-grazing contacts have an ill-conditioned `t` (as in the ray
+/// casts), but the contact position stays within that bound.
 ///
 /// ```
 /// use clockwork2d::prelude::*;
@@ -123,7 +134,7 @@ fn toi_from_cast<S: Scalar>(d: Vec2<S>, cast: impl FnOnce(Vec2<S>, S) -> Cast<S>
 /// relative motion of `a`'s centre is cast against the circle of radius
 /// `ra + rb` around `b`'s centre. The normal at a hit is the unit vector
 /// from `a`'s centre to `b`'s centre at that moment. See the
-/// [module docs](self) for the outcomes and the accuracy.
+/// outcomes and the accuracy on [`Toi`].
 ///
 /// ```
 /// use clockwork2d::prelude::*;
@@ -158,7 +169,7 @@ pub fn toi_circle_circle<S: Scalar>(
 /// `ha + hb` around `b`'s centre with the exact slab test of
 /// [`ray_aabb`](super::ray_aabb). The normal is `±X` or `±Y`, from `a` to
 /// `b`; when the boxes meet corner to corner (both axes close at the same
-/// instant), it is the **y** axis. See the [module docs](self).
+/// instant), it is the **y** axis. See [`Toi`].
 ///
 /// ```
 /// use clockwork2d::prelude::*;
@@ -184,7 +195,7 @@ pub fn toi_aabb_aabb<S: Scalar>(a: &Aabb<S>, da: Vec2<S>, b: &Aabb<S>, db: Vec2<
 /// from the circle to the box: `±X`/`±Y` when the circle meets a face, the
 /// unit vector from the circle's centre to the box's corner when it meets a
 /// corner. For a box moving against a circle, swap the arguments and negate
-/// the normal. See the [module docs](self).
+/// the normal. See [`Toi`].
 ///
 /// ```
 /// use clockwork2d::prelude::*;

@@ -29,7 +29,7 @@ pub fn fx(value: f64) -> Fx {
 }
 
 macro_rules! impl_scalar_fixed {
-    ($t:ty, $wide:ty, $name:literal, $id:literal) => {
+    ($t:ty, $wide:ty, $name:literal, $id:literal, $frac:literal) => {
         impl Scalar for $t {
             type Wide = $wide;
             const ZERO: Self = <$t>::ZERO;
@@ -73,7 +73,15 @@ macro_rules! impl_scalar_fixed {
             }
             #[inline]
             fn mul(self, rhs: Self) -> Self {
-                self.saturating_mul(rhs)
+                // The exact product of two i64 raw values always fits i128
+                // (one 64×64→128 machine multiply); shifting by the fraction
+                // bits rounds toward −∞ exactly like the `fixed` crate's
+                // `saturating_mul`, then the result is clamped. Bit-identical
+                // to `saturating_mul`, but without its general 128-bit path.
+                let product = i128::from(self.to_bits()) * i128::from(rhs.to_bits());
+                let shifted = product >> $frac;
+                let clamped = shifted.clamp(i128::from(i64::MIN), i128::from(i64::MAX));
+                <$t>::from_bits(i64::try_from(clamped).unwrap_or(i64::MAX))
             }
             #[inline]
             fn div(self, rhs: Self) -> Self {
@@ -130,5 +138,5 @@ macro_rules! impl_scalar_fixed {
     };
 }
 
-impl_scalar_fixed!(I32F32, I64F64, "I32F32", 1);
-impl_scalar_fixed!(I48F16, I96F32, "I48F16", 2);
+impl_scalar_fixed!(I32F32, I64F64, "I32F32", 1, 32);
+impl_scalar_fixed!(I48F16, I96F32, "I48F16", 2, 16);

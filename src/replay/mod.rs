@@ -334,7 +334,11 @@ impl<S: Scalar> Replay<S> {
                 self.hash_interval
             ));
         }
-        for (c, tick) in self.checkpoints.iter().zip(self.expected_checkpoint_ticks()) {
+        for (c, tick) in self
+            .checkpoints
+            .iter()
+            .zip(self.expected_checkpoint_ticks())
+        {
             if c.tick != tick {
                 return bad(format!(
                     "checkpoint at tick {} where tick {tick} was expected",

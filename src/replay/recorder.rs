@@ -52,7 +52,10 @@ impl<S: Scalar> Recorder<S> {
     /// Applies `commands` and steps the world (as [`World::step_with`]),
     /// recording both. Refused commands are recorded too: they are refused
     /// again, identically, on replay.
-    pub fn step_with(&mut self, commands: &[Command<S>]) -> Vec<Result<CommandOutcome, WorldError>> {
+    pub fn step_with(
+        &mut self,
+        commands: &[Command<S>],
+    ) -> Vec<Result<CommandOutcome, WorldError>> {
         let tick = self.world.tick();
         self.commands
             .extend(commands.iter().map(|c| (tick, c.clone())));

@@ -17,7 +17,9 @@ fn splitmix(state: &mut u64) -> u64 {
 
 /// An integer in `lo..=hi` from the generator.
 fn between(state: &mut u64, lo: i32, hi: i32) -> i32 {
-    let span = u64::try_from(i64::from(hi) - i64::from(lo) + 1).unwrap_or(1).max(1);
+    let span = u64::try_from(i64::from(hi) - i64::from(lo) + 1)
+        .unwrap_or(1)
+        .max(1);
     let offset = i32::try_from(splitmix(state) % span).unwrap_or(0);
     lo.saturating_add(offset)
 }
@@ -25,7 +27,9 @@ fn between(state: &mut u64, lo: i32, hi: i32) -> i32 {
 /// Picks one element.
 fn pick<T: Copy>(state: &mut u64, items: &[T]) -> Option<T> {
     let n = u64::try_from(items.len()).ok().filter(|&n| n > 0)?;
-    items.get(usize::try_from(splitmix(state) % n).ok()?).copied()
+    items
+        .get(usize::try_from(splitmix(state) % n).ok()?)
+        .copied()
 }
 
 /// The commands of the scripted input for the world's current tick, a pure

@@ -157,11 +157,10 @@ impl Scene {
             let what = || format!("generator {g}");
             let first = ids.len();
             for def in generator.defs::<S>(&what)? {
-                ids.push(
-                    world
-                        .add_body(def)
-                        .map_err(|error| SceneError::World { what: what(), error })?,
-                );
+                ids.push(world.add_body(def).map_err(|error| SceneError::World {
+                    what: what(),
+                    error,
+                })?);
             }
             if let Generator::Chain {
                 pivot,
@@ -174,7 +173,10 @@ impl Scene {
                 for &id in &ids[first..] {
                     world
                         .add_constraint(Constraint::rope(previous, Anchor::Body(id), length))
-                        .map_err(|error| SceneError::World { what: what(), error })?;
+                        .map_err(|error| SceneError::World {
+                            what: what(),
+                            error,
+                        })?;
                     previous = Anchor::Body(id);
                 }
             }
@@ -184,7 +186,10 @@ impl Scene {
             let built = scene_constraint::<S>(constraint, &ids, &what)?;
             world
                 .add_constraint(built)
-                .map_err(|error| SceneError::World { what: what(), error })?;
+                .map_err(|error| SceneError::World {
+                    what: what(),
+                    error,
+                })?;
         }
         Ok(world)
     }
@@ -198,9 +203,10 @@ fn add_scene_body<S: Scalar>(
     let d = def(body.kind, shape(&body.shape, what)?, &body.material, what)?
         .position(pair(body.position, what)?)
         .velocity(pair(body.velocity, what)?);
-    world
-        .add_body(d)
-        .map_err(|error| SceneError::World { what: what(), error })
+    world.add_body(d).map_err(|error| SceneError::World {
+        what: what(),
+        error,
+    })
 }
 
 fn anchor<S: Scalar>(

@@ -15,6 +15,19 @@ pub const BUILTIN_SCENES: &[(&str, &str)] = &[
     ("mixed", include_str!("../../scenes/mixed.ron")),
     ("springs", include_str!("../../scenes/springs.ron")),
     ("rope", include_str!("../../scenes/rope.ron")),
+    (
+        "large_pyramid",
+        include_str!("../../scenes/large_pyramid.ron"),
+    ),
+    ("balls5000", include_str!("../../scenes/balls5000.ron")),
+    (
+        "springs_grid",
+        include_str!("../../scenes/springs_grid.ron"),
+    ),
+    (
+        "ropes_chains",
+        include_str!("../../scenes/ropes_chains.ron"),
+    ),
 ];
 
 /// The built-in scene called `name`.

@@ -66,7 +66,11 @@ impl fmt::Display for SceneError {
                     .collect::<Vec<_>>()
                     .join(", ")
             ),
-            SceneError::BadReference { what, index, bodies } => write!(
+            SceneError::BadReference {
+                what,
+                index,
+                bodies,
+            } => write!(
                 f,
                 "{what}: body index {index} does not exist (the scene creates {bodies} bodies, indices 0..{bodies})"
             ),

@@ -227,17 +227,15 @@ pub(crate) fn config() -> impl bincode::config::Config {
 
 /// Decodes a whole payload with [`config`]; leftover bytes are an error.
 pub(crate) fn decode<T: serde::de::DeserializeOwned>(payload: &[u8]) -> Result<T, SnapshotError> {
-    let (value, read) = bincode::serde::decode_from_slice::<T, _>(payload, config()).map_err(
-        |e| SnapshotError::Decode {
-            reason: e.to_string(),
-        },
-    )?;
+    let (value, read) =
+        bincode::serde::decode_from_slice::<T, _>(payload, config()).map_err(|e| {
+            SnapshotError::Decode {
+                reason: e.to_string(),
+            }
+        })?;
     if read != payload.len() {
         return Err(SnapshotError::Decode {
-            reason: format!(
-                "{} bytes left over after the payload",
-                payload.len() - read
-            ),
+            reason: format!("{} bytes left over after the payload", payload.len() - read),
         });
     }
     Ok(value)

@@ -161,10 +161,9 @@ impl fmt::Display for SnapshotError {
                 f,
                 "declared payload of {declared} bytes is above the limit of {limit} bytes"
             ),
-            SnapshotError::Truncated { expected, actual } => write!(
-                f,
-                "truncated: {actual} bytes, at least {expected} expected"
-            ),
+            SnapshotError::Truncated { expected, actual } => {
+                write!(f, "truncated: {actual} bytes, at least {expected} expected")
+            }
             SnapshotError::TrailingBytes { extra } => {
                 write!(f, "{extra} unexpected bytes after the checksum")
             }

@@ -120,11 +120,7 @@ impl FileHeader {
     pub(crate) fn from_envelope(kind: FileKind, env: &Envelope<'_>) -> FileHeader {
         let hash_interval = match kind {
             FileKind::Snapshot => None,
-            FileKind::Replay => env
-                .extra
-                .try_into()
-                .ok()
-                .map(u32::from_le_bytes),
+            FileKind::Replay => env.extra.try_into().ok().map(u32::from_le_bytes),
         };
         FileHeader {
             kind,

@@ -312,10 +312,7 @@ pub(crate) fn decode<S: Scalar>(payload: &[u8]) -> Result<World<S>, SnapshotErro
                     .ok_or_else(|| {
                         SnapshotError::invalid(
                             "bodies",
-                            format!(
-                                "slot {index} names prototype {} of {proto_count}",
-                                c.proto
-                            ),
+                            format!("slot {index} names prototype {} of {proto_count}", c.proto),
                         )
                     })?;
                 if c.flags & !(FLAG_AWAKE | FLAG_FROZEN) != 0 {

@@ -21,9 +21,13 @@ impl<S: Scalar> World<S> {
     /// ends on the same body or on no body, negative lengths, stiffness or
     /// damping outside [0, 2²⁴], restitution outside [0, 1], offsets
     /// outside the world). The world is then unchanged.
-    pub fn add_constraint(&mut self, constraint: Constraint<S>) -> Result<ConstraintId, WorldError> {
+    pub fn add_constraint(
+        &mut self,
+        constraint: Constraint<S>,
+    ) -> Result<ConstraintId, WorldError> {
         self.validate_constraint(&constraint)?;
-        if self.constraint_free_list.is_empty() && self.constraint_slots.len() >= MAX_CONSTRAINT_SLOTS
+        if self.constraint_free_list.is_empty()
+            && self.constraint_slots.len() >= MAX_CONSTRAINT_SLOTS
         {
             return Err(WorldError::TooManyConstraints);
         }
@@ -86,9 +90,12 @@ impl<S: Scalar> World<S> {
             .iter()
             .zip(0u32..)
             .filter_map(|(slot, index)| {
-                slot.entry
-                    .as_ref()
-                    .map(|e| (ConstraintId::from_parts(index, slot.generation), &e.constraint))
+                slot.entry.as_ref().map(|e| {
+                    (
+                        ConstraintId::from_parts(index, slot.generation),
+                        &e.constraint,
+                    )
+                })
             })
     }
 

@@ -2,15 +2,15 @@
 
 mod bodies;
 mod command;
-mod constraints_api;
 mod commands_apply;
+mod constraints_api;
 mod error;
 mod events;
 mod queries;
 mod settings;
 mod step;
-mod validate;
 mod step_constraints;
+mod validate;
 
 use std::collections::BTreeMap;
 

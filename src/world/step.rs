@@ -5,19 +5,19 @@
 //! bullets' time of impact → integrate → position iterations → bounds] →
 //! sleep → events.
 
+use super::WorldSettings;
 use super::{Command, CommandOutcome, Event, World, WorldError};
-use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
-use crate::dynamics::contact_solver::{
-    ContactConstraint, solve_positions, solve_velocities, warm_start,
-};
-use crate::dynamics::{BodyId, BodyKind, NO_ISLAND, islands};
 use crate::collision::StepScratch;
+use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
 use crate::constraints::rope_block::{
     MAX_BLOCK, group_rows, solve_group_positions, solve_group_velocities,
 };
+use crate::dynamics::contact_solver::{
+    ContactConstraint, solve_positions, solve_velocities, warm_start,
+};
 use crate::dynamics::contact_solver::{solve_position_row, solve_velocity_row};
+use crate::dynamics::{BodyId, BodyKind, islands};
 use crate::geometry::Toi;
-use super::WorldSettings;
 use crate::math::{Scalar, Vec2};
 
 impl<S: Scalar> World<S> {
@@ -36,12 +36,14 @@ impl<S: Scalar> World<S> {
         self.events.clear();
         let results = commands.iter().map(|c| self.apply(c.clone())).collect();
         self.wake_across_constraints();
-        let previous_touching: Vec<(u32, u32)> = self
-            .contacts
-            .iter()
-            .filter(|c| c.touching)
-            .map(|c| (c.a, c.b))
-            .collect();
+        let mut previous_touching = core::mem::take(&mut self.scratch.touching_before);
+        previous_touching.clear();
+        previous_touching.extend(
+            self.contacts
+                .iter()
+                .filter(|c| c.touching)
+                .map(|c| (c.a, c.b)),
+        );
         let substeps = S::from_int(i32::try_from(self.settings.substeps).unwrap_or(1));
         // dt ∈ (0, 1] and substeps ∈ [1, 64] (validated), so both are exact
         // divisions by non-zero values.
@@ -52,6 +54,7 @@ impl<S: Scalar> World<S> {
         }
         self.update_sleep();
         self.push_contact_events(&previous_touching);
+        self.scratch.touching_before = previous_touching;
         self.events.sort_unstable();
         self.events.dedup();
         self.tick = self.tick.wrapping_add(1);
@@ -244,19 +247,17 @@ impl<S: Scalar> World<S> {
                 body_a.friction.mul(body_b.friction).sqrt()
             };
             let restitution = body_a.restitution.max(body_b.restitution);
-            let mut constraint = ContactConstraint {
+            let mut constraint = ContactConstraint::new(
                 a,
                 b,
-                normal: contact.normal,
-                separation: contact.separation,
-                inverse_mass_a: wa,
-                inverse_mass_b: wb,
-                effective_mass: S::ONE.div(sum),
+                contact.normal,
+                contact.separation,
+                wa,
+                wb,
                 friction,
-                target_velocity: S::ZERO,
                 normal_impulse,
                 tangent_impulse,
-            };
+            );
             constraint.prepare_target(
                 vn,
                 restitution,
@@ -348,24 +349,26 @@ impl<S: Scalar> World<S> {
     /// as ended.
     fn update_contact_cache(&mut self) {
         let slop = self.settings.linear_slop;
+        let mut fresh = core::mem::take(&mut self.scratch.contacts_next);
+        fresh.clear();
         let scratch = &self.scratch;
+        let slots = &self.slots;
         let active = |index: u32| {
-            self.slots[index as usize]
+            slots[index as usize]
                 .body
                 .as_ref()
                 .is_some_and(|b| b.is_moving())
         };
-        let kept: Vec<CachedContact<S>> = self
+        // Merge (both sorted by pair): the remembered contacts of pairs that
+        // were not simulated, and this substep's contacts.
+        let mut kept = self
             .contacts
             .iter()
             .filter(|c| !active(c.a) && !active(c.b))
-            .copied()
-            .collect();
-        let mut fresh = Vec::with_capacity(scratch.constraints.len() + kept.len());
-        let mut kept_iter = kept.into_iter().peekable();
+            .peekable();
         for c in &scratch.constraints {
-            while kept_iter.peek().is_some_and(|k| (k.a, k.b) < (c.a, c.b)) {
-                fresh.extend(kept_iter.next());
+            while let Some(k) = kept.next_if(|k| (k.a, k.b) < (c.a, c.b)) {
+                fresh.push(*k);
             }
             let motion = scratch.displacements[c.b as usize] - scratch.displacements[c.a as usize];
             let separation = c.separation.add(motion.dot(c.normal));
@@ -377,8 +380,9 @@ impl<S: Scalar> World<S> {
                 touching: separation <= slop,
             });
         }
-        fresh.extend(kept_iter);
-        self.contacts = fresh;
+        fresh.extend(kept.copied());
+        // Double buffer: the old cache becomes next substep's scratch.
+        self.scratch.contacts_next = core::mem::replace(&mut self.contacts, fresh);
     }
 
     /// Sleep timers, islands, and putting resting islands to sleep.
@@ -422,7 +426,11 @@ impl<S: Scalar> World<S> {
             }
         }
         // Constraints join islands like touching contacts.
-        for entry in self.constraint_slots.iter().filter_map(|s| s.entry.as_ref()) {
+        for entry in self
+            .constraint_slots
+            .iter()
+            .filter_map(|s| s.entry.as_ref())
+        {
             let (a, b) = entry.constraint.anchors();
             let (Some(ia), Some(ib)) = (a.body(), b.body()) else {
                 continue;
@@ -450,7 +458,9 @@ impl<S: Scalar> World<S> {
             }
         }
         // The island's readiness is its least-rested member.
-        let mut island_time: Vec<S> = vec![S::MAX; n];
+        let mut island_time = core::mem::take(&mut self.scratch.island_time);
+        island_time.clear();
+        island_time.resize(n, S::MAX);
         for i in 0..n {
             let Some(body) = self.slots[i].body.as_ref() else {
                 continue;
@@ -482,42 +492,41 @@ impl<S: Scalar> World<S> {
                 self.slots[i].generation,
             )));
         }
-        let _ = NO_ISLAND;
+        self.scratch.island_time = island_time;
     }
 
     /// Contact begin/end events by comparing the touching pairs before and
     /// after the tick (both sorted).
     fn push_contact_events(&mut self, before: &[(u32, u32)]) {
-        let after: Vec<(u32, u32)> = self
+        let mut after = self
             .contacts
             .iter()
             .filter(|c| c.touching)
             .map(|c| (c.a, c.b))
-            .collect();
-        let (mut i, mut j) = (0, 0);
-        while i < before.len() || j < after.len() {
-            match (before.get(i), after.get(j)) {
-                (Some(&x), Some(&y)) if x == y => {
-                    i += 1;
-                    j += 1;
+            .peekable();
+        let mut before = before.iter().copied().peekable();
+        loop {
+            let event = match (before.peek().copied(), after.peek().copied()) {
+                (Some(x), Some(y)) if x == y => {
+                    before.next();
+                    after.next();
+                    continue;
                 }
-                (Some(&x), Some(&y)) if x < y => {
-                    self.events
-                        .push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
-                    i += 1;
+                (Some(x), Some(y)) if x < y => {
+                    before.next();
+                    Event::ContactEnded(self.id_of(x.0), self.id_of(x.1))
                 }
-                (Some(&x), None) => {
-                    self.events
-                        .push(Event::ContactEnded(self.id_of(x.0), self.id_of(x.1)));
-                    i += 1;
+                (Some(x), None) => {
+                    before.next();
+                    Event::ContactEnded(self.id_of(x.0), self.id_of(x.1))
                 }
-                (_, Some(&y)) => {
-                    self.events
-                        .push(Event::ContactBegan(self.id_of(y.0), self.id_of(y.1)));
-                    j += 1;
+                (_, Some(y)) => {
+                    after.next();
+                    Event::ContactBegan(self.id_of(y.0), self.id_of(y.1))
                 }
                 (None, None) => break,
-            }
+            };
+            self.events.push(event);
         }
     }
 }

@@ -6,8 +6,8 @@
 //! contact solver's indexing without special cases.
 
 use super::World;
-use crate::constraints::{Anchor, Constraint};
 use crate::constraints::spring::{spring_impulse, theta_for};
+use crate::constraints::{Anchor, Constraint};
 use crate::dynamics::contact_solver::ContactConstraint;
 use crate::math::{Scalar, Vec2};
 
@@ -52,7 +52,11 @@ impl<S: Scalar> World<S> {
     /// constraint never pulls against a frozen sleeper.
     pub(crate) fn wake_across_constraints(&mut self) {
         let mut to_wake = Vec::new();
-        for entry in self.constraint_slots.iter().filter_map(|s| s.entry.as_ref()) {
+        for entry in self
+            .constraint_slots
+            .iter()
+            .filter_map(|s| s.entry.as_ref())
+        {
             let (a, b) = entry.constraint.anchors();
             let (Some(ia), Some(ib)) = (a.body(), b.body()) else {
                 continue;
@@ -78,7 +82,10 @@ impl<S: Scalar> World<S> {
         self.scratch.spring_dv.clear();
         self.scratch.spring_dv.resize(n + 1, Vec2::ZERO);
         for ci in 0..self.constraint_slots.len() {
-            let Some(constraint) = self.constraint_slots[ci].entry.as_ref().map(|e| e.constraint)
+            let Some(constraint) = self.constraint_slots[ci]
+                .entry
+                .as_ref()
+                .map(|e| e.constraint)
             else {
                 continue;
             };
@@ -102,8 +109,24 @@ impl<S: Scalar> World<S> {
                     let stretch = sb.position - sa.position - rest_offset;
                     let (tx, ty) = (theta_for(stiffness.x, w, h), theta_for(stiffness.y, w, h));
                     let lambda = Vec2::new(
-                        spring_impulse(stretch.x, relative_velocity.x, w, stiffness.x, damping, h, tx),
-                        spring_impulse(stretch.y, relative_velocity.y, w, stiffness.y, damping, h, ty),
+                        spring_impulse(
+                            stretch.x,
+                            relative_velocity.x,
+                            w,
+                            stiffness.x,
+                            damping,
+                            h,
+                            tx,
+                        ),
+                        spring_impulse(
+                            stretch.y,
+                            relative_velocity.y,
+                            w,
+                            stiffness.y,
+                            damping,
+                            h,
+                            ty,
+                        ),
                     );
                     // Share of Δv that positions do not see: (1 − θ) per axis.
                     (lambda, Vec2::new(S::ONE.sub(tx), S::ONE.sub(ty)))
@@ -186,19 +209,17 @@ impl<S: Scalar> World<S> {
             if slack > reach {
                 continue;
             }
-            let mut row = ContactConstraint {
-                a: sa.slot,
-                b: sb.slot,
+            let mut row = ContactConstraint::new(
+                sa.slot,
+                sb.slot,
                 normal,
-                separation: slack,
-                inverse_mass_a: sa.inverse_mass,
-                inverse_mass_b: sb.inverse_mass,
-                effective_mass: S::ONE.div(w),
-                friction: S::ZERO,
-                target_velocity: S::ZERO,
-                normal_impulse: warm,
-                tangent_impulse: S::ZERO,
-            };
+                slack,
+                sa.inverse_mass,
+                sb.inverse_mass,
+                S::ZERO,
+                warm,
+                S::ZERO,
+            );
             row.prepare_target(vn, restitution, threshold, h, inverse_h);
             self.scratch.rope_rows.push(row);
             self.scratch

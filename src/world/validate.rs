@@ -64,9 +64,8 @@ impl<S: Scalar> World<S> {
     }
 
     fn validate_bodies(&self) -> Result<(), SnapshotError> {
-        let bad = |id: BodyId, what: &str| {
-            Err(SnapshotError::invalid("bodies", format!("{id}: {what}")))
-        };
+        let bad =
+            |id: BodyId, what: &str| Err(SnapshotError::invalid("bodies", format!("{id}: {what}")));
         let max_size = S::from_int(MAX_SHAPE_SIZE);
         let limit = S::from_int(WORLD_LIMIT);
         let bounds = self.settings.bounds;
@@ -93,7 +92,10 @@ impl<S: Scalar> World<S> {
                     return bad(id, "inverse mass is not 1 / mass");
                 }
             } else if b.mass != S::ZERO || b.inverse_mass != S::ZERO {
-                return bad(id, "fixed and kinematic bodies have zero mass and inverse mass");
+                return bad(
+                    id,
+                    "fixed and kinematic bodies have zero mass and inverse mass",
+                );
             }
             if b.restitution.is_negative() || b.restitution > S::ONE || is_nan(b.restitution) {
                 return bad(id, "restitution must be in [0, 1]");
@@ -275,8 +277,7 @@ impl<S: Scalar> World<S> {
         for (slot, seen) in self.constraint_slots.iter().zip(&listed) {
             if slot.entry.is_some() == *seen {
                 return bad(
-                    "the constraint free list is not exactly the empty constraint slots"
-                        .to_owned(),
+                    "the constraint free list is not exactly the empty constraint slots".to_owned(),
                 );
             }
         }

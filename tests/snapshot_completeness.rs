@@ -1,0 +1,205 @@
+//! Snapshots are complete: for every built-in scene, snapshots taken at many
+//! ticks (mid-contact, mid-sleep, right after spawns and despawns) restore
+//! to worlds that then step bit-identically to the original, compared by
+//! state hash (64 and 128 bit), command results and events at every tick
+//! to the end of the run.
+
+use clockwork2d::prelude::*;
+use clockwork2d::replay::scripted_commands;
+use clockwork2d::scene::{BUILTIN_SCENES, Scene};
+
+/// What the snapshots of a run covered.
+#[derive(Default, Debug)]
+struct Coverage {
+    snapshots: usize,
+    touching: usize,
+    sleeping: usize,
+    after_removal: usize,
+    with_events: usize,
+    with_constraints: usize,
+}
+
+/// Every serialised field of the world (not only what the hash covers).
+fn serde_image(world: &World) -> Vec<u8> {
+    bincode::serde::encode_to_vec(world, bincode::config::standard()).unwrap()
+}
+
+/// Runs `world` for `ticks` ticks (with the scripted input if `seed` is
+/// given), snapshotting at `points`; every restored copy is stepped next to
+/// the original to the end.
+fn side_by_side(
+    name: &str,
+    mut world: World,
+    ticks: u64,
+    seed: Option<u64>,
+    points: &[u64],
+    coverage: &mut Coverage,
+) {
+    let mut followers: Vec<(u64, World)> = Vec::new();
+    let mut removed_last_tick = false;
+    for _ in 0..ticks {
+        let tick = world.tick();
+        if points.contains(&tick) {
+            let bytes = world.snapshot();
+            let restored: World = World::restore(&bytes)
+                .unwrap_or_else(|e| panic!("{name}: restore at tick {tick}: {e}"));
+            assert_eq!(restored.state_hash(), world.state_hash(), "{name} @ {tick}");
+            assert_eq!(
+                restored.state_hash128(),
+                world.state_hash128(),
+                "{name} @ {tick}"
+            );
+            assert_eq!(restored.events(), world.events(), "{name} @ {tick}: events");
+            assert_eq!(
+                restored.snapshot(),
+                bytes,
+                "{name} @ {tick}: re-encoding differs"
+            );
+            assert_eq!(
+                serde_image(&restored),
+                serde_image(&world),
+                "{name} @ {tick}: a serialised field was not restored"
+            );
+            // restore_into over a world that has been stepping.
+            let mut into = world.clone();
+            into.step();
+            into.restore_into(&bytes).unwrap();
+            assert_eq!(into.state_hash(), world.state_hash());
+            coverage.snapshots += 1;
+            coverage.touching += usize::from(world.touching_pairs().next().is_some());
+            coverage.sleeping += usize::from(
+                world
+                    .bodies()
+                    .any(|(_, b)| b.kind() == BodyKind::Dynamic && !b.is_awake()),
+            );
+            coverage.after_removal += usize::from(removed_last_tick);
+            coverage.with_events += usize::from(!world.events().is_empty());
+            coverage.with_constraints += usize::from(world.constraints().next().is_some());
+            followers.push((tick, restored));
+        }
+        let commands = seed.map_or_else(Vec::new, |s| scripted_commands(&world, s));
+        removed_last_tick = commands
+            .iter()
+            .any(|c| matches!(c, Command::Despawn(_) | Command::Spawn(_)));
+        let expected = world.step_with(&commands);
+        let digest = world.state_digest();
+        for (start, follower) in &mut followers {
+            let results = follower.step_with(&commands);
+            assert_eq!(
+                results, expected,
+                "{name}: restored at {start}: command results"
+            );
+            let other = follower.state_digest();
+            assert!(
+                other == digest,
+                "{name}: restored at tick {start} diverged at tick {}: parts {:?}",
+                world.tick(),
+                digest.differing_parts(&other)
+            );
+            assert_eq!(follower.state_hash128(), world.state_hash128());
+            assert_eq!(follower.events(), world.events(), "{name}: events");
+        }
+    }
+}
+
+fn build(text: &str) -> World {
+    Scene::from_ron(text).unwrap().build().unwrap()
+}
+
+/// Ticks right after each kind of scripted command (see
+/// `scripted_commands`), a few plain ones, and late ones when things sleep.
+const POINTS: &[u64] = &[0, 1, 8, 21, 31, 46, 47, 81, 100, 111, 161, 200, 246, 290];
+
+#[test]
+fn every_scene_restores_bit_identically_with_scripted_input() {
+    let mut coverage = Coverage::default();
+    for (name, text) in BUILTIN_SCENES {
+        // The ball pit is the heavy one: fewer ticks.
+        let ticks = if *name == "balls" { 110 } else { 300 };
+        side_by_side(name, build(text), ticks, Some(11), POINTS, &mut coverage);
+    }
+    assert!(coverage.touching > 10, "{coverage:?}");
+    assert!(coverage.after_removal >= 3, "{coverage:?}");
+    assert!(coverage.with_events > 5, "{coverage:?}");
+}
+
+#[test]
+fn every_scene_restores_bit_identically_mid_sleep() {
+    let mut coverage = Coverage::default();
+    for (name, text) in BUILTIN_SCENES {
+        let ticks = if *name == "balls" { 60 } else { 420 };
+        let points = [0, 1, 30, 59, 120, 200, 260, 330, 400];
+        side_by_side(name, build(text), ticks, None, &points, &mut coverage);
+    }
+    assert!(coverage.sleeping >= 3, "{coverage:?}");
+}
+
+#[test]
+fn worlds_with_constraints_restore_bit_identically() {
+    let mut world: World = World::new(WorldSettings::default());
+    let v = |x: f64, y: f64| Vec2::new(fx(x), fx(y));
+    world
+        .add_body(BodyDef::fixed(Shape::aabb(v(20.0, 0.5))).position(v(0.0, -0.5)))
+        .unwrap();
+    let mut previous = None;
+    for i in 0..6 {
+        let x = f64::from(i) * 0.8;
+        let ball = world
+            .add_body(BodyDef::dynamic(Shape::circle(fx(0.2))).position(v(x, 6.0)))
+            .unwrap();
+        let top = match previous {
+            None => Anchor::Point(v(0.0, 8.0)),
+            Some(p) => Anchor::Body(p),
+        };
+        world
+            .add_constraint(Constraint::rope(top, Anchor::Body(ball), fx(1.0)))
+            .unwrap();
+        previous = Some(ball);
+    }
+    let boxed = world
+        .add_body(BodyDef::dynamic(Shape::aabb(v(0.4, 0.4))).position(v(-4.0, 3.0)))
+        .unwrap();
+    world
+        .add_constraint(Constraint::bendy_spring(
+            Anchor::Point(v(-4.0, 4.0)),
+            Anchor::Body(boxed),
+            v(40.0, 40.0),
+            fx(1.0),
+        ))
+        .unwrap();
+    let swing = world
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(v(6.0, 4.0)))
+        .unwrap();
+    world
+        .add_constraint(Constraint::radial_spring(
+            Anchor::Point(v(8.0, 4.0)),
+            Anchor::Body(swing),
+            fx(1.5),
+            fx(60.0),
+            fx(0.5),
+        ))
+        .unwrap();
+    let mut coverage = Coverage::default();
+    side_by_side("constraints", world, 300, Some(5), POINTS, &mut coverage);
+    assert!(coverage.with_constraints > 5, "{coverage:?}");
+}
+
+#[test]
+fn other_scalars_snapshot_too() {
+    use fixed::types::I48F16;
+    let (_, text) = BUILTIN_SCENES.iter().find(|(n, _)| *n == "stack").unwrap();
+    let mut world: World<I48F16> = Scene::from_ron(text).unwrap().build().unwrap();
+    for _ in 0..50 {
+        world.step();
+    }
+    let bytes = world.snapshot();
+    let mut copy = World::<I48F16>::restore(&bytes).unwrap();
+    for _ in 0..50 {
+        world.step();
+        copy.step();
+        assert_eq!(world.state_hash(), copy.state_hash());
+    }
+    // An I48F16 snapshot is refused by an Fx world, by name.
+    let err = World::<Fx>::restore(&bytes).unwrap_err();
+    assert!(err.to_string().contains("I48F16"), "{err}");
+}
