@@ -100,7 +100,10 @@ fn every_scenario_exercises_its_feature() {
     assert!(ropes.refused.is_empty(), "{ropes:?}");
 
     let grapple = &run("grapple_rays").coverage;
-    assert!(grapple.ray_hits >= 100 && grapple.ray_misses >= 10, "{grapple:?}");
+    assert!(
+        grapple.ray_hits >= 100 && grapple.ray_misses >= 10,
+        "{grapple:?}"
+    );
     // Four throws: rope added, swing, rope removed, fling.
     assert_eq!(grapple.applied, 16, "{grapple:?}");
     assert_eq!(grapple.max_constraints, 1, "{grapple:?}");
@@ -133,8 +136,7 @@ fn every_scenario_exercises_its_feature() {
 fn replay_and_snapshot_files_verify() {
     for r in runs() {
         let replay = r.replay.to_bytes();
-        let compared = verify_files(r.name, &replay, &r.snapshot)
-            .unwrap_or_else(|e| panic!("{e}"));
+        let compared = verify_files(r.name, &replay, &r.snapshot).unwrap_or_else(|e| panic!("{e}"));
         assert!(compared >= 11 + 6, "{}: {compared} checkpoints", r.name);
     }
 }

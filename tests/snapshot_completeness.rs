@@ -110,26 +110,36 @@ fn build(text: &str) -> World {
 /// `scripted_commands`), a few plain ones, and late ones when things sleep.
 const POINTS: &[u64] = &[0, 1, 8, 21, 31, 46, 47, 81, 100, 111, 161, 200, 246, 290];
 
+/// Ticks to run a scene for: the whole default length for small scenes,
+/// fewer for large ones so that every scene costs about the same (about
+/// 60 000 body-steps per run, plus the restored copies).
+fn ticks_for(world: &World, full: u64) -> u64 {
+    let bodies = world.body_count().max(1) as u64;
+    (60_000 / bodies).clamp(24, full)
+}
+
 #[test]
 fn every_scene_restores_bit_identically_with_scripted_input() {
     let mut coverage = Coverage::default();
     for (name, text) in BUILTIN_SCENES {
-        // The ball pit is the heavy one: fewer ticks.
-        let ticks = if *name == "balls" { 110 } else { 300 };
-        side_by_side(name, build(text), ticks, Some(11), POINTS, &mut coverage);
+        let world = build(text);
+        let ticks = ticks_for(&world, 300);
+        side_by_side(name, world, ticks, Some(11), POINTS, &mut coverage);
     }
     assert!(coverage.touching > 10, "{coverage:?}");
     assert!(coverage.after_removal >= 3, "{coverage:?}");
     assert!(coverage.with_events > 5, "{coverage:?}");
+    assert!(coverage.with_constraints > 3, "{coverage:?}");
 }
 
 #[test]
 fn every_scene_restores_bit_identically_mid_sleep() {
     let mut coverage = Coverage::default();
     for (name, text) in BUILTIN_SCENES {
-        let ticks = if *name == "balls" { 60 } else { 420 };
-        let points = [0, 1, 30, 59, 120, 200, 260, 330, 400];
-        side_by_side(name, build(text), ticks, None, &points, &mut coverage);
+        let world = build(text);
+        let ticks = ticks_for(&world, 420);
+        let points = [0, 1, 23, 30, 59, 120, 200, 260, 330, 400];
+        side_by_side(name, world, ticks, None, &points, &mut coverage);
     }
     assert!(coverage.sleeping >= 3, "{coverage:?}");
 }
@@ -202,4 +212,45 @@ fn other_scalars_snapshot_too() {
     // An I48F16 snapshot is refused by an Fx world, by name.
     let err = World::<Fx>::restore(&bytes).unwrap_err();
     assert!(err.to_string().contains("I48F16"), "{err}");
+}
+
+/// A dynamic body that leaves the world bounds while touching a fixed body
+/// is frozen in `write_back`, after the contact was solved; the contact
+/// cache update then keeps the pair both as a fresh contact and as a
+/// "kept" contact of two inactive bodies, so the cache holds the pair twice
+/// (and `touching_pairs` reports it twice). Restore refuses such a cache.
+///
+/// Fix (in `World::update_contact_cache`, src/world/step.rs): when merging,
+/// drop a kept entry whose pair equals the fresh entry's pair.
+#[test]
+#[ignore = "engine bug in src/world/step.rs (duplicate contact after freezing); see doc comment"]
+fn a_body_frozen_while_touching_snapshots_cleanly() {
+    let mut settings = WorldSettings::default();
+    settings.bounds = Aabb::new(Vec2::ZERO, Vec2::new(fx(10.0), fx(10.0)));
+    let mut world: World = World::new(settings);
+    world
+        .add_body(
+            BodyDef::fixed(Shape::aabb(Vec2::new(fx(20.0), fx(0.5))))
+                .position(Vec2::new(fx(0.0), fx(-0.5))),
+        )
+        .unwrap();
+    let ball = world
+        .add_body(
+            BodyDef::dynamic(Shape::circle(fx(0.5))).position(Vec2::new(fx(9.0), fx(0.5))),
+        )
+        .unwrap();
+    for _ in 0..30 {
+        world.step();
+    }
+    world
+        .apply(Command::SetVelocity {
+            body: ball,
+            velocity: Vec2::new(fx(100.0), fx(0.0)),
+        })
+        .unwrap();
+    world.step();
+    assert!(world.body(ball).unwrap().is_frozen());
+    assert_eq!(world.touching_pairs().count(), 1, "the pair is cached twice");
+    let restored: World = World::restore(&world.snapshot()).unwrap();
+    assert_eq!(restored.state_hash(), world.state_hash());
 }

@@ -17,8 +17,9 @@
 //!   another target to verify.
 //! * `--verify DIR`: also verifies files written by `--write` (possibly on
 //!   another architecture): the replay re-simulates to its hashes, those
-//!   hashes are the goldens, and the snapshot restores and continues to the
-//!   golden hashes.
+//!   hashes are the goldens, the snapshot restores and continues to the
+//!   golden hashes, and both files are byte for byte the ones this target
+//!   writes.
 //! * `--print-golden`: prints the Rust source of `src/determinism/golden.rs`
 //!   for the current behaviour; `--update-golden` writes it there.
 //!
@@ -159,6 +160,7 @@ fn main() -> ExitCode {
     let mut failures = Vec::new();
     let mut usage_error = false;
     let mut passed = 0u32;
+    let mut runs: Vec<ScenarioRun> = Vec::new();
     for scenario in &selected {
         let start = Instant::now();
         let run = match scenario.run() {
@@ -205,6 +207,7 @@ fn main() -> ExitCode {
             eprintln!("cannot write {}: {e}", dir.display());
             usage_error = true;
         }
+        runs.push(run);
     }
     for dir in &options.verify {
         let writer = std::fs::read_to_string(dir.join(WRITER_FILE))
@@ -219,13 +222,25 @@ fn main() -> ExitCode {
                 }
                 Ok((replay, snapshot)) => match verify_files(scenario.name, &replay, &snapshot) {
                     Ok(n) => {
-                        passed += 1;
-                        row(
-                            &label,
-                            &name,
-                            "ok",
-                            &format!("replay + snapshot, {n} checkpoints"),
-                        );
+                        // The files this target writes are the same bytes.
+                        let ours = runs.iter().find(|r| r.name == scenario.name);
+                        let same = ours.is_some_and(|r| {
+                            r.snapshot == snapshot && r.replay.to_bytes() == replay
+                        });
+                        if same {
+                            passed += 1;
+                            row(
+                                &label,
+                                &name,
+                                "ok",
+                                &format!("replay + snapshot verify ({n} checkpoints), same bytes"),
+                            );
+                        } else {
+                            row(&label, &name, "MISMATCH", "see below");
+                            failures.push(format!(
+                                "{name}: the files verify, but this target writes different bytes"
+                            ));
+                        }
                     }
                     Err(e) => {
                         row(&label, &name, "MISMATCH", "see below");

@@ -251,6 +251,41 @@ impl<S: Scalar> Replay<S> {
         self.initial.tick().wrapping_add(self.ticks)
     }
 
+    /// Assembles a replay from its parts (for tools that log sessions
+    /// themselves, e.g. a lockstep server), with the same table checks as
+    /// [`Replay::from_bytes`]. `commands` are `(tick, command)` in
+    /// application order; `checkpoints` must be at the initial tick, every
+    /// `hash_interval` ticks after it, and at the final tick.
+    ///
+    /// # Errors
+    /// [`SnapshotError::Invalid`] (part `"replay"`) for inconsistent tables,
+    /// or the initial world's own invalidity.
+    pub fn from_parts(
+        initial: World<S>,
+        hash_interval: u32,
+        ticks: u64,
+        commands: Vec<(u64, Command<S>)>,
+        checkpoints: Vec<Checkpoint>,
+    ) -> Result<Replay<S>, SnapshotError> {
+        initial.validate()?;
+        if commands.len() > MAX_REPLAY_COMMANDS || checkpoints.len() > MAX_CHECKPOINTS {
+            return Err(SnapshotError::invalid(
+                "replay",
+                "more commands or checkpoints than a replay file may hold",
+            ));
+        }
+        let replay = Replay {
+            crate_version: env!("CARGO_PKG_VERSION").to_owned(),
+            hash_interval,
+            initial,
+            ticks,
+            commands,
+            checkpoints,
+        };
+        replay.check_tables()?;
+        Ok(replay)
+    }
+
     /// The replay as bytes (layout in the [module docs](self)).
     #[must_use]
     pub fn to_bytes(&self) -> Vec<u8> {

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# No float arithmetic on the simulation path (DESIGN.md, determinism rules).
+#
+# The compiler enforces it: src/lib.rs has #![deny(clippy::float_arithmetic)],
+# which covers every module of the library, and CI runs clippy with
+# -D warnings. This script checks that nobody switched the lint off:
+#
+#   * src/lib.rs still denies clippy::float_arithmetic crate-wide;
+#   * Cargo.toml's lint table does not allow it;
+#   * an allow/expect/warn of clippy::float_arithmetic (or of the whole
+#     clippy::restriction group, or a cfg_attr that does either) appears in
+#     src/ only
+#       - in the reference f64/f32 scalar impls (ALLOWED below, with the
+#         most allows each file may hold), or
+#       - below a file's first #[cfg(test)] (unit tests computing reference
+#         values in f64), or
+#       - in src/bin/ (command-line edge code: reports, timings).
+#
+# Exit 0 when clean; 1 with one line per offending allow otherwise.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# path|most allows|why
+ALLOWED=(
+  "src/math/float_impls.rs|1|the f64/f32 reference Scalar impls (module-wide allow)"
+  "src/math/wide.rs|1|the f64 wide type of the reference scalars (impl_wide_float)"
+)
+
+status=0
+fail() {
+  echo "check-float-allows: $*" >&2
+  status=1
+}
+
+if ! grep -Eq '^#!\[deny\(clippy::float_arithmetic\)\]' src/lib.rs; then
+  fail "src/lib.rs must keep #![deny(clippy::float_arithmetic)] (crate-wide)"
+fi
+if grep -Eq 'float_arithmetic[[:space:]]*=[[:space:]]*("(allow|warn)"|\{[^}]*level[[:space:]]*=[[:space:]]*"(allow|warn)")' Cargo.toml; then
+  fail "Cargo.toml's [lints.clippy] must not allow or weaken float_arithmetic"
+fi
+
+pattern='(allow|expect|warn)[[:space:]]*\([^)]*clippy::(float_arithmetic|restriction)'
+
+budget_for() {
+  local file=$1 entry
+  for entry in "${ALLOWED[@]}"; do
+    if [[ ${entry%%|*} == "$file" ]]; then
+      entry=${entry#*|}
+      echo "${entry%%|*}"
+      return
+    fi
+  done
+  echo 0
+}
+
+while IFS= read -r file; do
+  case "$file" in
+    src/bin/*) continue ;;
+  esac
+  # Allows above the first #[cfg(test)] line (non-test code), as "line:text".
+  hits=$(awk -v pat="$pattern" '
+    /^[[:space:]]*#\[cfg\(test\)\]/ { exit }
+    $0 ~ pat { print FNR ":" $0 }
+  ' "$file")
+  [[ -z $hits ]] && continue
+  count=$(printf '%s\n' "$hits" | wc -l)
+  budget=$(budget_for "$file")
+  if ((count > budget)); then
+    while IFS= read -r hit; do
+      fail "$file:${hit%%:*}: float arithmetic allowed outside the reference scalar impls and tests:${hit#*:}"
+    done <<<"$hits"
+  fi
+done < <(grep -rlE "$pattern" src --include='*.rs' || true)
+
+if ((status == 0)); then
+  echo "check-float-allows: ok (clippy::float_arithmetic denied crate-wide; allowed only in the reference scalar impls, unit tests and src/bin)"
+else
+  echo "check-float-allows: the simulation path must stay free of f32/f64 arithmetic (see DESIGN.md); convert at the edge with fx()/to_f64() instead" >&2
+fi
+exit "$status"
