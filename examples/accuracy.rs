@@ -246,7 +246,11 @@ fn pendulum<S: Scalar>(iterations: u32, substeps: u32) -> (f64, f64, f64) {
         .expect("bob");
     let length = S::ONE;
     world
-        .add_constraint(Constraint::rope(Anchor::Point(Vec2::ZERO), Anchor::Body(id), length))
+        .add_constraint(Constraint::rope(
+            Anchor::Point(Vec2::ZERO),
+            Anchor::Body(id),
+            length,
+        ))
         .expect("rope");
     let (x0, y0) = start.to_f64();
     let mut x = vec![x0];
@@ -378,7 +382,11 @@ fn cases<S: Scalar>() -> Vec<Case> {
             let (a_circle, b_circle) = [(true, true), (false, false), (true, false)][i % 3];
             let size = |rng: &mut Rng, circle: bool| {
                 let x = rng.range(0.05, 2.0);
-                if circle { (x, x) } else { (x, rng.range(0.05, 2.0)) }
+                if circle {
+                    (x, x)
+                } else {
+                    (x, rng.range(0.05, 2.0))
+                }
             };
             let ha = size(&mut rng, a_circle);
             let hb = size(&mut rng, b_circle);
@@ -492,7 +500,11 @@ fn scalar_rows<S: Scalar>(rows: &mut Vec<Row>, geometry: &mut Vec<GeometryRow>) 
 }
 
 fn sci(x: f64) -> String {
-    if x == 0.0 { "0".to_owned() } else { format!("{x:.2e}") }
+    if x == 0.0 {
+        "0".to_owned()
+    } else {
+        format!("{x:.2e}")
+    }
 }
 
 fn machine() -> String {
@@ -535,9 +547,16 @@ fn markdown(rows: &[Row], geometry: &[GeometryRow]) -> String {
         md,
         "| scalar | iterations | substeps | ns/step | projectile | spring T | spring A | pendulum T | rope stretch | sag | penetration |"
     );
-    let _ = writeln!(md, "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let _ = writeln!(
+        md,
+        "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+    );
     for r in rows {
-        let default = if (r.iterations, r.substeps) == (8, 1) { " (default)" } else { "" };
+        let default = if (r.iterations, r.substeps) == (8, 1) {
+            " (default)"
+        } else {
+            ""
+        };
         let _ = writeln!(
             md,
             "| {} | {}{} | {} | {:.0} | {} | {} | {} | {} | {} | {} | {} |",
@@ -589,7 +608,10 @@ fn markdown(rows: &[Row], geometry: &[GeometryRow]) -> String {
          The tiny scenes above cost little; their ns/step (medians) show the fixed cost of a step \
          per scalar at the default settings (8 iterations, 1 substep):\n"
     );
-    let _ = writeln!(md, "| scalar | projectile (1 body) | spring (1 body) | pendulum (1 body, 1 rope) | pyramid (210 boxes) |");
+    let _ = writeln!(
+        md,
+        "| scalar | projectile (1 body) | spring (1 body) | pendulum (1 body, 1 rope) | pyramid (210 boxes) |"
+    );
     let _ = writeln!(md, "|---|---:|---:|---:|---:|");
     for r in rows.iter().filter(|r| (r.iterations, r.substeps) == (8, 1)) {
         let _ = writeln!(
@@ -629,9 +651,9 @@ fn plot(rows: &[Row], path: &Path) -> Result<(), Box<dyn std::error::Error>> {
         ("f32", RGBColor(0xff, 0x7f, 0x0e)),
     ];
     let us = |r: &Row| r.ns_pyramid / 1e3;
-    let (xmin, xmax) = rows
-        .iter()
-        .fold((f64::MAX, f64::MIN), |(lo, hi), r| (lo.min(us(r)), hi.max(us(r))));
+    let (xmin, xmax) = rows.iter().fold((f64::MAX, f64::MIN), |(lo, hi), r| {
+        (lo.min(us(r)), hi.max(us(r)))
+    });
     let root = SVGBackend::new(path, (1500, 900)).into_drawing_area();
     root.fill(&WHITE)?;
     let root = root.titled(
@@ -642,9 +664,9 @@ fn plot(rows: &[Row], path: &Path) -> Result<(), Box<dyn std::error::Error>> {
     let panels = root.split_evenly((2, 3));
     for ((title, measure), area) in measures.iter().zip(panels.iter()) {
         let value = |r: &Row| measure(r).abs().max(FLOOR);
-        let (ymin, ymax) = rows
-            .iter()
-            .fold((f64::MAX, f64::MIN), |(lo, hi), r| (lo.min(value(r)), hi.max(value(r))));
+        let (ymin, ymax) = rows.iter().fold((f64::MAX, f64::MIN), |(lo, hi), r| {
+            (lo.min(value(r)), hi.max(value(r)))
+        });
         let mut chart = ChartBuilder::on(area)
             .caption(*title, ("sans-serif", 16))
             .margin(10)

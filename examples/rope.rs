@@ -23,8 +23,10 @@ const LINKS: usize = 10;
 const SEGMENT: f64 = 0.15;
 
 fn main() -> Result<(), WorldError> {
-    let mut settings: WorldSettings = WorldSettings::default();
-    settings.sleep_enabled = false;
+    let settings: WorldSettings = WorldSettings {
+        sleep_enabled: false,
+        ..WorldSettings::default()
+    };
     let g = -settings.gravity.y.to_f64();
     let mut world: World = World::new(settings);
 

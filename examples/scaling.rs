@@ -23,15 +23,20 @@
 //!   has the same neighbourhood at every size. The difference between the
 //!   two exponents is what the one-axis sweep costs when columns get taller.
 //!
-//! Times are wall-clock medians of the per-step times (robust against
-//! other processes on a shared machine).
+//! The fit uses the thread's CPU time over the timed steps (Linux:
+//! `/proc/thread-self/schedstat`; it does not count time other processes
+//! held the core); the wall-clock median per step is printed next to it.
 #![allow(clippy::float_arithmetic)]
 #![allow(clippy::cast_precision_loss)]
+
+#[path = "support/cpu_time.rs"]
+mod cpu_time;
 
 use std::time::Instant;
 
 use clockwork2d::World;
 use clockwork2d::scene::{Generator, Scene, SceneKind, SceneMaterial, SceneSettings, SceneShape};
+use cpu_time::thread_cpu_ns;
 
 const TARGETS: [u32; 6] = [1_000, 2_000, 4_000, 8_000, 16_000, 32_000];
 const SETTLE: usize = 90;
@@ -79,14 +84,18 @@ fn balls(columns: u32, rows: u32) -> Scene {
     }
 }
 
-/// Median ms per step over `TIMED` steps after `SETTLE` untimed ones.
-fn time_scene(scene: &Scene) -> f64 {
+/// `(ms/step from the thread's CPU time, wall-clock median ms/step)` over
+/// `TIMED` steps after `SETTLE` untimed ones. The CPU figure (see
+/// `support/cpu_time.rs`) falls back to the wall median where the platform
+/// has no per-thread CPU time.
+fn time_scene(scene: &Scene) -> (f64, f64) {
     let mut world: World = scene
         .build()
         .unwrap_or_else(|e| panic!("{}: {e}", scene.name));
     for _ in 0..SETTLE {
         world.step();
     }
+    let cpu_start = thread_cpu_ns();
     let mut times: Vec<f64> = (0..TIMED)
         .map(|_| {
             let start = Instant::now();
@@ -94,8 +103,14 @@ fn time_scene(scene: &Scene) -> f64 {
             start.elapsed().as_secs_f64() * 1e3
         })
         .collect();
+    let cpu_end = thread_cpu_ns();
     times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
+    let wall = times[times.len() / 2];
+    let cpu = match (cpu_start, cpu_end) {
+        (Some(a), Some(b)) => b.saturating_sub(a) as f64 / 1e6 / TIMED as f64,
+        _ => wall,
+    };
+    (cpu, wall)
 }
 
 /// Least-squares slope of ln y against ln x.
@@ -110,21 +125,21 @@ fn fitted_exponent(points: &[(f64, f64)]) -> f64 {
 
 fn series(name: &str, shape: impl Fn(u32) -> (u32, u32)) -> f64 {
     println!("\n## {name}\n");
-    println!("| balls | grid | ms/step (median) | µs per ball |");
-    println!("|---:|---|---:|---:|");
+    println!("| balls | grid | ms/step (CPU) | ms/step (wall, median) | µs per ball (CPU) |");
+    println!("|---:|---|---:|---:|---:|");
     let mut points = Vec::new();
     for target in TARGETS {
         let (columns, rows) = shape(target);
         let n = columns * rows;
-        let ms = time_scene(&balls(columns, rows));
+        let (cpu, wall) = time_scene(&balls(columns, rows));
         println!(
-            "| {n} | {columns} × {rows} | {ms:.3} | {:.3} |",
-            ms * 1e3 / f64::from(n)
+            "| {n} | {columns} × {rows} | {cpu:.2} | {wall:.2} | {:.2} |",
+            cpu * 1e3 / f64::from(n)
         );
-        points.push((f64::from(n), ms));
+        points.push((f64::from(n), cpu));
     }
     let p = fitted_exponent(&points);
-    println!("\nfitted exponent (ms/step ∝ N^p, least squares on log-log): p = {p:.3}");
+    println!("\nfitted exponent (CPU ms/step ∝ N^p, least squares on log-log): p = {p:.3}");
     p
 }
 
@@ -134,7 +149,10 @@ fn main() {
     // Box 2:1: columns ≈ √(2N), rows ≈ N / columns.
     let square = series("box 2:1 (balls5000's shape)", |target| {
         let columns = (2.0 * f64::from(target)).sqrt().round() as u32;
-        (columns, (f64::from(target) / f64::from(columns)).round() as u32)
+        (
+            columns,
+            (f64::from(target) / f64::from(columns)).round() as u32,
+        )
     });
     let wide = series("fixed height (50 rows)", |target| (target / 50, 50));
     println!("\n## Summary\n");

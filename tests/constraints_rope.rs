@@ -23,10 +23,11 @@ fn v(x: f64, y: f64) -> Vec2 {
 /// Default settings with gravity `(0, -g)`; sleeping off (a pendulum is at
 /// rest for an instant at every turning point).
 fn settings(g: f64) -> WorldSettings {
-    let mut s = WorldSettings::default();
-    s.gravity = v(0.0, -g);
-    s.sleep_enabled = false;
-    s
+    WorldSettings {
+        gravity: v(0.0, -g),
+        sleep_enabled: false,
+        ..WorldSettings::default()
+    }
 }
 
 fn ball(world: &mut World, radius: f64, mass: f64, p: (f64, f64), vel: (f64, f64)) -> BodyId {
@@ -461,9 +462,10 @@ fn rope_restitution_0_removes_radial_velocity_and_keeps_tangential() {
 /// at rest.
 #[test]
 fn rope_and_ground_together_bob_rests_on_ground_without_penetrating_or_overstretching() {
-    let mut s = WorldSettings::default();
-    s.gravity = v(2.0, -10.0);
-    let mut world = World::new(s);
+    let mut world = World::new(WorldSettings {
+        gravity: v(2.0, -10.0),
+        ..WorldSettings::default()
+    });
     world
         .add_body(
             BodyDef::fixed(Shape::aabb(v(10.0, 0.5)))

@@ -32,10 +32,11 @@ fn v(x: f64, y: f64) -> Vec2 {
 /// passes through zero velocity at every turning point; it must never be put
 /// to sleep there).
 fn settings(g: f64) -> WorldSettings {
-    let mut s = WorldSettings::default();
-    s.gravity = v(0.0, -g);
-    s.sleep_enabled = false;
-    s
+    WorldSettings {
+        gravity: v(0.0, -g),
+        sleep_enabled: false,
+        ..WorldSettings::default()
+    }
 }
 
 /// A dynamic circle of radius 0.1 with the given mass, position and velocity.

@@ -39,9 +39,22 @@ fn s(p: &std::path::Path) -> &str {
 fn record_then_verify_then_info() {
     let dir = scratch("record");
     let out = dir.join("stack.replay");
-    let o = cli(&["record", "stack", "--ticks", "120", "--hash-every", "10", "-o", s(&out)]);
+    let o = cli(&[
+        "record",
+        "stack",
+        "--ticks",
+        "120",
+        "--hash-every",
+        "10",
+        "-o",
+        s(&out),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(stdout(&o).starts_with("recorded 120 ticks of stack to "), "{}", stdout(&o));
+    assert!(
+        stdout(&o).starts_with("recorded 120 ticks of stack to "),
+        "{}",
+        stdout(&o)
+    );
 
     let o = cli(&["verify", s(&out)]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
@@ -82,7 +95,16 @@ fn record_with_an_input_file() {
     )
     .unwrap();
     let out = dir.join("in.replay");
-    let o = cli(&["record", "stack", "--ticks", "60", "--inputs", s(&inputs), "-o", s(&out)]);
+    let o = cli(&[
+        "record",
+        "stack",
+        "--ticks",
+        "60",
+        "--inputs",
+        s(&inputs),
+        "-o",
+        s(&out),
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let replay: Replay = Replay::from_bytes(&std::fs::read(&out).unwrap()).unwrap();
     let ticks: Vec<u64> = replay.commands().iter().map(|(t, _)| *t).collect();
@@ -91,7 +113,16 @@ fn record_with_an_input_file() {
 
     // A bad input file is a one-line error, exit 2.
     std::fs::write(&inputs, "[(1, [Explode])]").unwrap();
-    let o = cli(&["record", "stack", "--ticks", "5", "--inputs", s(&inputs), "-o", s(&out)]);
+    let o = cli(&[
+        "record",
+        "stack",
+        "--ticks",
+        "5",
+        "--inputs",
+        s(&inputs),
+        "-o",
+        s(&out),
+    ]);
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(stderr(&o).lines().count(), 1, "{}", stderr(&o));
 }
@@ -167,11 +198,18 @@ fn verify_and_info_accept_snapshots() {
     assert_eq!(o.status.code(), Some(0));
     assert_eq!(
         stdout(&o).trim(),
-        format!("ok: snapshot at tick 20, hash 0x{:016x}", world.state_hash())
+        format!(
+            "ok: snapshot at tick 20, hash 0x{:016x}",
+            world.state_hash()
+        )
     );
     let o = cli(&["info", s(&path)]);
     assert!(o.status.success());
-    assert!(stdout(&o).contains("clockwork2d snapshot"), "{}", stdout(&o));
+    assert!(
+        stdout(&o).contains("clockwork2d snapshot"),
+        "{}",
+        stdout(&o)
+    );
     assert!(stdout(&o).contains("tick            20"), "{}", stdout(&o));
 }
 
@@ -190,15 +228,25 @@ fn diff_lists_differences_in_words() {
 
     let o = cli(&["diff", s(&a), s(&a)]);
     assert_eq!(o.status.code(), Some(0));
-    assert!(stdout(&o).starts_with("identical: tick 10, state hash 0x"), "{}", stdout(&o));
+    assert!(
+        stdout(&o).starts_with("identical: tick 10, state hash 0x"),
+        "{}",
+        stdout(&o)
+    );
 
     let o = cli(&["diff", s(&a), s(&b), "--limit", "5"]);
     assert_eq!(o.status.code(), Some(1));
     let text = stdout(&o);
     let lines: Vec<&str> = text.lines().collect();
-    assert!(lines[0].contains("differences (A tick 10, B tick 11"), "{text}");
+    assert!(
+        lines[0].contains("differences (A tick 10, B tick 11"),
+        "{text}"
+    );
     assert_eq!(lines[1], "world: tick 10 vs 11");
-    assert!(lines[2].starts_with("bodies: body 1 (gen 0) position.y 0x"), "{text}");
+    assert!(
+        lines[2].starts_with("bodies: body 1 (gen 0) position.y 0x"),
+        "{text}"
+    );
     assert!(text.contains("... and "), "{text}");
 
     let o = cli(&["diff", s(&a), "/nonexistent/file"]);

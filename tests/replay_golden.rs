@@ -114,7 +114,10 @@ fn regenerate_golden_replays() {
     let source = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("tests/replay_golden.rs");
     let text = std::fs::read_to_string(&source).expect("read this test's source");
     let begin = text.find("// BEGIN GOLDEN").expect("BEGIN marker");
-    let start = text[begin..].find('\n').map(|i| begin + i + 1).expect("marker line");
+    let start = text[begin..]
+        .find('\n')
+        .map(|i| begin + i + 1)
+        .expect("marker line");
     let end = text.find("// END GOLDEN").expect("END marker");
     let updated = format!("{}{}{}", &text[..start], table, &text[end..]);
     std::fs::write(&source, updated).expect("write this test's source");

@@ -103,7 +103,10 @@ fn dropped_inputs_diverge_at_the_next_checkpoint_and_name_the_part() {
     assert!(d.parts.contains(&"bodies"), "{:?}", d.parts);
     assert!(!d.parts.contains(&"world"), "{:?}", d.parts);
     let text = d.to_string();
-    assert!(text.starts_with("diverged at tick 10: state hash 0x"), "{text}");
+    assert!(
+        text.starts_with("diverged at tick 10: state hash 0x"),
+        "{text}"
+    );
     assert!(text.contains("parts that differ: bodies"), "{text}");
     // Through bytes too.
     let read: Replay = Replay::from_bytes(&tampered.to_bytes()).unwrap();
@@ -161,9 +164,7 @@ fn inconsistent_tables_are_refused() {
     shuffled.push((0, Command::Wake(BodyId::from_parts(1, 0))));
     assert!(parts(30, good.clone(), shuffled).is_err());
     // Interval 0.
-    assert!(
-        Replay::from_parts(replay.initial().clone(), 0, 30, commands, good).is_err()
-    );
+    assert!(Replay::from_parts(replay.initial().clone(), 0, 30, commands, good).is_err());
 }
 
 #[test]

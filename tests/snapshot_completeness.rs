@@ -225,8 +225,10 @@ fn other_scalars_snapshot_too() {
 #[test]
 #[ignore = "engine bug in src/world/step.rs (duplicate contact after freezing); see doc comment"]
 fn a_body_frozen_while_touching_snapshots_cleanly() {
-    let mut settings = WorldSettings::default();
-    settings.bounds = Aabb::new(Vec2::ZERO, Vec2::new(fx(10.0), fx(10.0)));
+    let settings = WorldSettings {
+        bounds: Aabb::new(Vec2::ZERO, Vec2::new(fx(10.0), fx(10.0))),
+        ..WorldSettings::default()
+    };
     let mut world: World = World::new(settings);
     world
         .add_body(
@@ -235,9 +237,7 @@ fn a_body_frozen_while_touching_snapshots_cleanly() {
         )
         .unwrap();
     let ball = world
-        .add_body(
-            BodyDef::dynamic(Shape::circle(fx(0.5))).position(Vec2::new(fx(9.0), fx(0.5))),
-        )
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(Vec2::new(fx(9.0), fx(0.5))))
         .unwrap();
     for _ in 0..30 {
         world.step();
@@ -250,7 +250,11 @@ fn a_body_frozen_while_touching_snapshots_cleanly() {
         .unwrap();
     world.step();
     assert!(world.body(ball).unwrap().is_frozen());
-    assert_eq!(world.touching_pairs().count(), 1, "the pair is cached twice");
+    assert_eq!(
+        world.touching_pairs().count(),
+        1,
+        "the pair is cached twice"
+    );
     let restored: World = World::restore(&world.snapshot()).unwrap();
     assert_eq!(restored.state_hash(), world.state_hash());
 }

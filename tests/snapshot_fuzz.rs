@@ -58,7 +58,10 @@ fn exercise(bytes: &[u8]) -> bool {
             let frozen = w.bodies().any(|(_, b)| b.is_frozen());
             match World::<Fx>::restore(&w.snapshot()) {
                 Ok(again) => assert_eq!(again.state_hash(), w.state_hash()),
-                Err(e) => assert!(frozen, "an accepted world stepped into an invalid state: {e}"),
+                Err(e) => assert!(
+                    frozen,
+                    "an accepted world stepped into an invalid state: {e}"
+                ),
             }
             true
         }

@@ -250,13 +250,11 @@ fn mass_ratio_case(gap: f64) {
 }
 
 #[test]
-#[ignore = "engine: 8 velocity iterations do not hold a 1:100 pair; it sinks 0.041 into the ground (tick 10) and rests 0.004 deep"]
 fn mass_ratio_1_to_100_resting_does_not_sink_and_comes_to_rest() {
     mass_ratio_case(0.0);
 }
 
 #[test]
-#[ignore = "engine: 8 velocity iterations do not hold a 1:100 pair; dropped 0.05 it sinks 0.061 into the ground (tick 12)"]
 fn mass_ratio_1_to_100_dropped_does_not_sink_and_comes_to_rest() {
     // Dropped 0.05 onto the light box: lands at sqrt(2·10·0.05) = 1 unit/s.
     mass_ratio_case(0.05);

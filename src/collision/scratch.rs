@@ -31,6 +31,10 @@ pub(crate) struct StepScratch<S: Scalar> {
     pub(crate) rope_slots: Vec<u32>,
     /// Rope rows grouped by shared bodies (chains), for the block solver.
     pub(crate) rope_groups: Vec<Vec<usize>>,
+    /// Contact rows grouped by shared bodies, for the block solver.
+    pub(crate) contact_groups: Vec<Vec<usize>>,
+    /// Group number of each union-find root while grouping rows.
+    pub(crate) group_index: Vec<u32>,
     /// Working memory of the block solver.
     pub(crate) rope_block: BlockScratch<S>,
     /// Pairs touching before the tick (for contact events).

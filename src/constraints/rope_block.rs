@@ -29,48 +29,45 @@ pub(crate) const MAX_BLOCK: usize = 64;
 /// Active-set rounds per solve.
 const ROUNDS: usize = 4;
 
-/// Groups of rope rows connected through bodies with finite mass, each
-/// sorted ascending, in order of their first row (deterministic).
-pub(crate) fn group_rows<S: Scalar>(rows: &[ContactConstraint<S>], groups: &mut Vec<Vec<usize>>) {
+/// Groups of rows connected through bodies with finite mass, each sorted
+/// ascending, in order of their first row (deterministic). Linear time: a
+/// union-find over body slots (`slot_count` of them), then one pass.
+pub(crate) fn group_rows<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    slot_count: usize,
+    parents: &mut Vec<u32>,
+    group_index: &mut Vec<u32>,
+    groups: &mut Vec<Vec<usize>>,
+) {
     groups.clear();
-    let n = rows.len();
-    let mut parent: Vec<usize> = (0..n).collect();
-    fn find(parent: &mut [usize], mut i: usize) -> usize {
-        while parent[i] != i {
-            parent[i] = parent[parent[i]];
-            i = parent[i];
+    parents.clear();
+    parents.extend((0..slot_count).map(|i| u32::try_from(i).unwrap_or(u32::MAX)));
+    // Join the two ends of every row that are both dynamic.
+    for row in rows {
+        if row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive() {
+            crate::dynamics::islands::union(parents, row.a, row.b);
         }
-        i
     }
-    for i in 0..n {
-        for j in (i + 1)..n {
-            if shares_dynamic_body(&rows[i], &rows[j]) {
-                let (ri, rj) = (find(&mut parent, i), find(&mut parent, j));
-                if ri != rj {
-                    let (lo, hi) = if ri < rj { (ri, rj) } else { (rj, ri) };
-                    parent[hi] = lo;
+    // The group of a row is the root of its (first) dynamic end.
+    group_index.clear();
+    group_index.resize(slot_count, u32::MAX);
+    for (r, row) in rows.iter().enumerate() {
+        let end = if row.inverse_mass_b.is_positive() {
+            row.b
+        } else {
+            row.a
+        };
+        let root = crate::dynamics::islands::find(parents, end) as usize;
+        match group_index.get(root).copied() {
+            Some(g) if g != u32::MAX => groups[g as usize].push(r),
+            _ => {
+                if let Some(slot) = group_index.get_mut(root) {
+                    *slot = u32::try_from(groups.len()).unwrap_or(u32::MAX);
                 }
+                groups.push(vec![r]);
             }
         }
     }
-    let mut index_of_root: Vec<Option<usize>> = vec![None; n];
-    for i in 0..n {
-        let root = find(&mut parent, i);
-        match index_of_root[root] {
-            Some(g) => groups[g].push(i),
-            None => {
-                index_of_root[root] = Some(groups.len());
-                groups.push(vec![i]);
-            }
-        }
-    }
-}
-
-fn shares_dynamic_body<S: Scalar>(p: &ContactConstraint<S>, q: &ContactConstraint<S>) -> bool {
-    let ends = |c: &ContactConstraint<S>| [(c.a, c.inverse_mass_a), (c.b, c.inverse_mass_b)];
-    ends(p)
-        .iter()
-        .any(|&(s, w)| w.is_positive() && ends(q).iter().any(|&(t, _)| t == s))
 }
 
 /// `A_ij` for rows `p` and `q`.

@@ -144,13 +144,26 @@ fn apply_row<S: Scalar>(c: &ContactConstraint<S>, dn: S, dt: S, velocities: &mut
     }
 }
 
-/// One sequential-impulse pass over all contacts, in their (sorted) order.
-pub(crate) fn solve_velocities<S: Scalar>(
-    constraints: &mut [ContactConstraint<S>],
+/// The friction half of [`solve_velocity_row`] (used after a block solve of
+/// the normal impulses).
+#[inline]
+pub(crate) fn solve_friction_row<S: Scalar>(
+    c: &mut ContactConstraint<S>,
     velocities: &mut [Vec2<S>],
 ) {
-    for c in constraints.iter_mut() {
-        solve_velocity_row(c, velocities);
+    let limit = c.friction.mul(c.normal_impulse);
+    let old_t = c.tangent_impulse;
+    if limit == S::ZERO && old_t == S::ZERO {
+        return;
+    }
+    let relative = velocities[c.b as usize] - velocities[c.a as usize];
+    let vt = c.normal.cross(relative);
+    c.tangent_impulse = old_t
+        .sub(vt.mul(c.effective_mass))
+        .clamp(limit.neg(), limit);
+    let dt = c.tangent_impulse.sub(old_t);
+    if dt != S::ZERO {
+        apply_row(c, S::ZERO, dt, velocities);
     }
 }
 
@@ -191,25 +204,12 @@ pub(crate) fn solve_velocity_row<S: Scalar>(
     }
 }
 
-/// One pass of position correction on the substep's displacements.
+/// Position correction of one row on the substep's displacements.
 ///
 /// The current separation is `s = s0 + (Δb - Δa)·n` (exact for translation
 /// with a fixed normal). Penetration beyond the slop is reduced by the
 /// fraction `beta`, at most `max_correction` per pass; the correction moves
 /// positions only, so it cannot add kinetic energy.
-pub(crate) fn solve_positions<S: Scalar>(
-    constraints: &[ContactConstraint<S>],
-    displacements: &mut [Vec2<S>],
-    slop: S,
-    beta: S,
-    max_correction: S,
-) {
-    for c in constraints {
-        solve_position_row(c, displacements, slop, beta, max_correction);
-    }
-}
-
-/// Position correction of one row (see [`solve_positions`]).
 #[inline]
 pub(crate) fn solve_position_row<S: Scalar>(
     c: &ContactConstraint<S>,

@@ -27,6 +27,9 @@ use crate::world::Command;
 /// Most entries an input file may have (bounds memory for untrusted files).
 const MAX_INPUT_COMMANDS: usize = 1 << 20;
 
+/// Parsed inputs: `(tick, commands of that tick)`, sorted by tick.
+pub type TickInputs<S> = Vec<(u64, Vec<Command<S>>)>;
+
 /// One command of an input file. Body ids are `(index, generation)`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub enum InputCommand {
@@ -157,7 +160,7 @@ impl InputCommand {
 ///
 /// # Errors
 /// An [`InputError`].
-pub fn parse_inputs<S: Scalar>(text: &str) -> Result<Vec<(u64, Vec<Command<S>>)>, InputError> {
+pub fn parse_inputs<S: Scalar>(text: &str) -> Result<TickInputs<S>, InputError> {
     let raw: Vec<(u64, Vec<InputCommand>)> = ron::Options::default()
         .from_str(text)
         .map_err(|e| InputError::Parse(e.to_string()))?;

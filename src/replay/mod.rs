@@ -58,7 +58,7 @@ use std::marker::PhantomData;
 use serde::de::{Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 
-pub use inputs::{InputCommand, InputError, parse_inputs};
+pub use inputs::{InputCommand, InputError, TickInputs, parse_inputs};
 pub use recorder::Recorder;
 pub use script::scripted_commands;
 pub use verify::{Divergence, VerifyReport};

@@ -22,7 +22,7 @@ fn sample() -> World {
     for i in 0..4 {
         w.add_body(
             BodyDef::dynamic(Shape::aabb(Vec2::new(fx(0.5), fx(0.5))))
-                .position(Vec2::new(fx(0.0), fx(0.5 + f64::from(i)))),
+                .position(Vec2::new(fx(0.0), Fx::from_ratio(2 * i + 1, 2))),
         )
         .unwrap();
     }
@@ -91,16 +91,17 @@ fn bad_settings_are_refused() {
 #[test]
 fn bad_bodies_are_refused() {
     let i = first_dynamic(&sample());
-    let cases: Vec<(&str, Box<dyn Fn(&mut World)>)> = vec![
+    type Breaker = Box<dyn Fn(&mut World)>;
+    let cases: Vec<(&str, Breaker)> = vec![
         (
             "negative radius",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().shape = Shape::Circle { radius: fx(-1.0) };
             }),
         ),
         (
             "zero half extent",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().shape = Shape::Aabb {
                     half_extents: Vec2::new(fx(0.0), fx(1.0)),
                 };
@@ -108,37 +109,37 @@ fn bad_bodies_are_refused() {
         ),
         (
             "inverse mass",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().inverse_mass = fx(3.0);
             }),
         ),
         (
             "zero mass",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().mass = Fx::ZERO;
             }),
         ),
         (
             "fixed with mass",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[0].body.as_mut().unwrap().mass = fx(1.0);
             }),
         ),
         (
             "restitution",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().restitution = fx(2.0);
             }),
         ),
         (
             "out of bounds",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().position = Vec2::new(fx(40000.0), fx(0.0));
             }),
         ),
         (
             "frozen outside the limit",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 let b = w.slots[i].body.as_mut().unwrap();
                 b.frozen = true;
                 b.awake = true;
@@ -148,19 +149,19 @@ fn bad_bodies_are_refused() {
         ),
         (
             "negative sleep time",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[i].body.as_mut().unwrap().sleep_time = fx(-1.0);
             }),
         ),
         (
             "awake fixed body",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[0].body.as_mut().unwrap().awake = true;
             }),
         ),
         (
             "fixed bullet",
-            Box::new(|w: &mut World| {
+            Box::new(move |w: &mut World| {
                 w.slots[0].body.as_mut().unwrap().bullet = true;
             }),
         ),

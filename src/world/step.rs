@@ -9,13 +9,12 @@ use super::WorldSettings;
 use super::{Command, CommandOutcome, Event, World, WorldError};
 use crate::collision::StepScratch;
 use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
+use crate::constraints::rope_block::BlockScratch;
 use crate::constraints::rope_block::{
     MAX_BLOCK, group_rows, solve_group_positions, solve_group_velocities,
 };
-use crate::dynamics::contact_solver::{
-    ContactConstraint, solve_positions, solve_velocities, warm_start,
-};
-use crate::dynamics::contact_solver::{solve_position_row, solve_velocity_row};
+use crate::dynamics::contact_solver::{ContactConstraint, warm_start};
+use crate::dynamics::contact_solver::{solve_friction_row, solve_position_row, solve_velocity_row};
 use crate::dynamics::{BodyId, BodyKind, islands};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
@@ -80,24 +79,56 @@ impl<S: Scalar> World<S> {
         }
         self.build_rope_rows(h, inverse_h);
         let scratch = &mut self.scratch;
-        group_rows(&scratch.rope_rows, &mut scratch.rope_groups);
+        let slot_count = scratch.velocities.len();
+        group_rows(
+            &scratch.rope_rows,
+            slot_count,
+            &mut scratch.parents,
+            &mut scratch.group_index,
+            &mut scratch.rope_groups,
+        );
+        group_rows(
+            &scratch.constraints,
+            slot_count,
+            &mut scratch.parents,
+            &mut scratch.group_index,
+            &mut scratch.contact_groups,
+        );
         warm_start(&scratch.rope_rows, &mut scratch.velocities);
         warm_start(&scratch.constraints, &mut scratch.velocities);
         for _ in 0..self.settings.velocity_iterations {
-            solve_rope_velocities(scratch);
-            solve_velocities(&mut scratch.constraints, &mut scratch.velocities);
+            let StepScratch {
+                rope_rows,
+                rope_groups,
+                constraints,
+                contact_groups,
+                velocities,
+                rope_block,
+                ..
+            } = scratch;
+            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block);
+            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block);
         }
         self.integrate(h);
         let settings = &self.settings;
         let scratch = &mut self.scratch;
         for _ in 0..settings.position_iterations {
-            solve_rope_positions(scratch, settings);
-            solve_positions(
-                &scratch.constraints,
-                &mut scratch.displacements,
-                settings.linear_slop,
-                settings.position_correction,
-                settings.max_correction,
+            let StepScratch {
+                rope_rows,
+                rope_groups,
+                constraints,
+                contact_groups,
+                displacements,
+                rope_block,
+                ..
+            } = scratch;
+            solve_group_list_positions(rope_rows, rope_groups, displacements, settings, rope_block);
+            solve_group_list_positions(
+                constraints,
+                contact_groups,
+                displacements,
+                settings,
+                rope_block,
             );
         }
         self.write_back();
@@ -531,48 +562,51 @@ impl<S: Scalar> World<S> {
     }
 }
 
-/// One velocity pass over the rope rows: chains exactly, single ropes and
-/// oversized groups by sequential impulses.
-fn solve_rope_velocities<S: Scalar>(scratch: &mut StepScratch<S>) {
-    let StepScratch {
-        rope_rows,
-        rope_groups,
-        velocities,
-        rope_block,
-        ..
-    } = scratch;
-    for group in rope_groups.iter() {
+/// One velocity pass over grouped rows (ropes or contacts). A group of
+/// 2..=[`MAX_BLOCK`] rows (a chain, a small stack, a heavy box on a light
+/// one) has its normal impulses solved exactly by the block solver, then
+/// its friction by sequential impulses; single rows and large groups (big
+/// piles) take plain sequential impulses, whose cost stays linear.
+fn solve_group_list_velocities<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    groups: &[Vec<usize>],
+    velocities: &mut [Vec2<S>],
+    block: &mut BlockScratch<S>,
+) {
+    for group in groups {
         if group.len() == 1 || group.len() > MAX_BLOCK {
             for &ri in group {
-                solve_velocity_row(&mut rope_rows[ri], velocities);
+                solve_velocity_row(&mut rows[ri], velocities);
             }
         } else {
-            solve_group_velocities(rope_rows, group, velocities, rope_block);
+            solve_group_velocities(rows, group, velocities, block);
+            for &ri in group {
+                solve_friction_row(&mut rows[ri], velocities);
+            }
         }
     }
 }
 
-/// One position pass over the rope rows (same split as the velocities).
-fn solve_rope_positions<S: Scalar>(scratch: &mut StepScratch<S>, settings: &WorldSettings<S>) {
-    let StepScratch {
-        rope_rows,
-        rope_groups,
-        displacements,
-        rope_block,
-        ..
-    } = scratch;
+/// One position pass over grouped rows (same split as the velocities).
+fn solve_group_list_positions<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    groups: &[Vec<usize>],
+    displacements: &mut [Vec2<S>],
+    settings: &WorldSettings<S>,
+    block: &mut BlockScratch<S>,
+) {
     let (slop, beta, max) = (
         settings.linear_slop,
         settings.position_correction,
         settings.max_correction,
     );
-    for group in rope_groups.iter() {
+    for group in groups {
         if group.len() == 1 || group.len() > MAX_BLOCK {
             for &ri in group {
-                solve_position_row(&rope_rows[ri], displacements, slop, beta, max);
+                solve_position_row(&rows[ri], displacements, slop, beta, max);
             }
         } else {
-            solve_group_positions(rope_rows, group, displacements, slop, beta, max, rope_block);
+            solve_group_positions(rows, group, displacements, slop, beta, max, block);
         }
     }
 }
