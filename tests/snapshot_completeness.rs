@@ -218,12 +218,12 @@ fn other_scalars_snapshot_too() {
 /// is frozen in `write_back`, after the contact was solved; the contact
 /// cache update then keeps the pair both as a fresh contact and as a
 /// "kept" contact of two inactive bodies, so the cache holds the pair twice
-/// (and `touching_pairs` reports it twice). Restore refuses such a cache.
+/// (and `touching_pairs` reported it twice). Restore refuses such a cache,
+/// so this test guards the fix.
 ///
-/// Fix (in `World::update_contact_cache`, src/world/step.rs): when merging,
-/// drop a kept entry whose pair equals the fresh entry's pair.
+/// Fixed in `World::update_contact_cache` (src/world/step.rs): when merging,
+/// a kept entry whose pair equals the fresh entry's pair is dropped.
 #[test]
-#[ignore = "engine bug in src/world/step.rs (duplicate contact after freezing); see doc comment"]
 fn a_body_frozen_while_touching_snapshots_cleanly() {
     let settings = WorldSettings {
         bounds: Aabb::new(Vec2::ZERO, Vec2::new(fx(10.0), fx(10.0))),

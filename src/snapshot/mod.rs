@@ -14,7 +14,7 @@
 //! world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
 //! world.step();
 //! let bytes = world.snapshot();
-//! let mut copy = World::restore(&bytes).unwrap();
+//! let mut copy: World = World::restore(&bytes).unwrap();
 //! world.step();
 //! copy.step();
 //! assert_eq!(world.state_hash(), copy.state_hash());

@@ -398,8 +398,13 @@ impl<S: Scalar> World<S> {
             .filter(|c| !active(c.a) && !active(c.b))
             .peekable();
         for c in &scratch.constraints {
-            while let Some(k) = kept.next_if(|k| (k.a, k.b) < (c.a, c.b)) {
-                fresh.push(*k);
+            // A pair can be both: a body frozen at the bounds during this
+            // substep is no longer active, yet its contact was simulated.
+            // The fresh entry wins; the remembered one is dropped.
+            while let Some(k) = kept.next_if(|k| (k.a, k.b) <= (c.a, c.b)) {
+                if (k.a, k.b) != (c.a, c.b) {
+                    fresh.push(*k);
+                }
             }
             let motion = scratch.displacements[c.b as usize] - scratch.displacements[c.a as usize];
             let separation = c.separation.add(motion.dot(c.normal));
