@@ -109,11 +109,12 @@ struct GeometryRow {
 }
 
 fn settings<S: Scalar>(iterations: u32, substeps: u32) -> WorldSettings<S> {
-    let mut s = WorldSettings::<S>::default();
-    s.velocity_iterations = iterations;
-    s.substeps = substeps;
-    s.sleep_enabled = false;
-    s
+    WorldSettings {
+        velocity_iterations: iterations,
+        substeps,
+        sleep_enabled: false,
+        ..WorldSettings::default()
+    }
 }
 
 fn v<S: Scalar>(x: f64, y: f64) -> Vec2<S> {

@@ -387,8 +387,6 @@ fn radial_spring_vertical_hang_oscillates_about_l_plus_mg_over_k_with_period_wit
 /// come out of an f64 model of the formula, so it is the formulation, not
 /// rounding. See the report for a suggested fix (midpoint axis).
 #[test]
-#[ignore = "engine: radial spring gains angular momentum exponentially (+14 % in 10 s); \
-            θ-method position rule with the axis frozen at the start of the step"]
 fn radial_spring_no_perpendicular_force_angular_momentum_conserved_over_600_steps() {
     let mut world = World::new(settings(0.0));
     let body = ball(&mut world, 1.0, (2.0, 0.0), (0.0, 3.0));
@@ -430,7 +428,6 @@ fn radial_spring_no_perpendicular_force_angular_momentum_conserved_over_600_step
 ///
 /// Measured: the energy grows (same cause as the angular-momentum test).
 #[test]
-#[ignore = "engine: radial spring swinging under gravity gains energy (see report)"]
 fn radial_spring_swing_from_horizontal_conserves_energy_within_1_percent_over_10_s() {
     let (rest, k, m, g): (f64, f64, f64, f64) = (2.0, 16.0, 1.0, 10.0);
     let mut world = World::new(settings(g));

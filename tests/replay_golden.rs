@@ -30,11 +30,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0x0442dbffc212cfa7),
+    ("stack", 0x641cf553379d09a2),
     ("pyramid", 0xd51bbdd0a8f3e472),
-    ("balls", 0x9b6f48b4fc514e77),
-    ("bullets", 0x4f471b5c7aa3de5e),
-    ("mixed", 0xa95aaca56f1bab6e),
+    ("balls", 0xb9b7be1ff34f8885),
+    ("bullets", 0x5e1ff25196078dac),
+    ("mixed", 0xc68601a3546f43bb),
 ];
 // END GOLDEN
 

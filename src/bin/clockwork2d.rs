@@ -27,7 +27,9 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand};
 use clockwork2d::diff::diff_worlds;
 use clockwork2d::dynamics::BodyKind;
-use clockwork2d::replay::{Recorder, Replay, parse_inputs, scripted_commands};
+use clockwork2d::replay::{
+    MAX_CHECKPOINTS, MAX_REPLAY_TICKS, Recorder, Replay, parse_inputs, scripted_commands,
+};
 use clockwork2d::scene::{BUILTIN_SCENES, DEFAULT_SCENE, Scene, SceneError, builtin};
 use clockwork2d::snapshot::{FileHeader, FileKind, SnapshotError};
 use clockwork2d::{Command, Fx, Scalar, World};
@@ -208,6 +210,14 @@ fn record(
     hash_every: u32,
     output: &Path,
 ) -> ExitCode {
+    // A recording the reader would refuse is refused up front.
+    let checkpoints = (ticks / u64::from(hash_every.max(1))).saturating_add(2);
+    if ticks > MAX_REPLAY_TICKS || checkpoints > MAX_CHECKPOINTS as u64 {
+        return fail(format!(
+            "a replay holds at most {MAX_REPLAY_TICKS} ticks and {MAX_CHECKPOINTS} checkpoints \
+             (use a larger --hash-every)"
+        ));
+    }
     let world: World = match load(scene_name).and_then(|s| s.build()) {
         Ok(w) => w,
         Err(e) => return fail(e),

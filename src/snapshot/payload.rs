@@ -36,8 +36,9 @@ pub const MAX_SNAPSHOT_SLOTS: usize = 1 << 21;
 const MAX_PROTOS: usize = MAX_SNAPSHOT_SLOTS;
 /// Most constraint slots a snapshot may hold (2²¹), for the same reason.
 pub const MAX_SNAPSHOT_CONSTRAINTS: usize = 1 << 21;
-/// Most cached contacts (2²⁴; each is at least 5 bytes in the file).
-const MAX_CONTACTS: usize = 1 << 24;
+/// Most cached contacts (2²³, four per body slot): each is at least 5
+/// bytes in the file but about 64 in memory while decoding.
+const MAX_CONTACTS: usize = 1 << 23;
 /// Most sleeping islands (at most one per slot).
 const MAX_ISLANDS: usize = MAX_SNAPSHOT_SLOTS;
 

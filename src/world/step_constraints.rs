@@ -137,15 +137,26 @@ impl<S: Scalar> World<S> {
                     damping,
                     ..
                 } => {
-                    // A body exactly at the pivot is pushed along +Y (the
-                    // geometry module's convention for coincident points).
-                    let (axis, length) = (sb.position - sa.position)
-                        .try_normalize_with_length()
-                        .unwrap_or((Vec2::Y, S::ZERO));
-                    let stretch = length.sub(rest_length);
-                    let v = relative_velocity.dot(axis);
                     let theta = theta_for(stiffness, w, h);
                     let lag = S::ONE.sub(theta);
+                    let offset = sb.position - sa.position;
+                    let length = offset.length();
+                    // The impulse acts along the pole where the θ-method
+                    // evaluates the force: the position moves by
+                    // h·(v + θ·Δv), so the pole is taken at
+                    // r + (1−θ)·h·v. An impulse along r itself would change
+                    // r × v by (1−θ)·h·(v × v') every step — always the same
+                    // sign while the body orbits, so the swing would gain
+                    // angular momentum and energy without bound. Along this
+                    // axis the impulse is parallel to the displacement's
+                    // lever and r × v is conserved (to rounding).
+                    // A body exactly at the pivot (and at rest) is pushed
+                    // along +Y, the geometry module's convention for
+                    // coincident points.
+                    let lever = offset + relative_velocity.scale(h).scale(lag);
+                    let axis = lever.try_normalize().unwrap_or(Vec2::Y);
+                    let stretch = length.sub(rest_length);
+                    let v = relative_velocity.dot(axis);
                     (
                         axis.scale(spring_impulse(stretch, v, w, stiffness, damping, h, theta)),
                         Vec2::new(lag, lag),
