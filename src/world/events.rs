@@ -11,7 +11,8 @@ use crate::dynamics::BodyId;
 /// bodies frozen at the bounds (each sorted by id).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, Deserialize)]
 pub enum Event {
-    /// Two bodies stopped touching (`a < b`).
+    /// Two bodies stopped touching (`a < b`). Touching means within the
+    /// linear slop, or exchanging a contact impulse (a speculative bounce).
     ContactEnded(BodyId, BodyId),
     /// Two bodies started touching (`a < b`).
     ContactBegan(BodyId, BodyId),
