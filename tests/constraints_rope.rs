@@ -236,20 +236,14 @@ fn rope_chain_light_links_heavy_bob_mass_ratio_100_with_2_substeps_stretch_under
 /// it falls and whips, and its end link turns by up to ~0.6 rad per tick.
 /// Target (the issue's): no segment ever stretches more than 0.5 %.
 ///
-/// Measured: the end segment stretches 18.1 % at the whip (tick 101) with
-/// one substep, 7.1 % with 2, 2.1 % with 4 (it is not contacts: the same
-/// with link radius 0.01). Cause: a rope row's direction is frozen at the
-/// start of the substep, so a link moving sideways by `v_t·h` ends up
-/// stretched by `≈ (v_t·h)²/(2ℓ)`, and the position iterations, which use
-/// the linearised separation `s + (d_b − d_a)·n` along that same frozen
-/// normal, cannot see this second-order stretch. A single pendulum
-/// released horizontal shows the same term: 0.27 % = (√(2gL)·h/L)²/2 at
-/// the bottom, 0.078 % with 2 substeps. Fix suggestion: recompute each
-/// rope's current direction and length from the corrected positions in
-/// the position iterations (non-linear Gauss–Seidel).
+/// A rope row's direction is set at the start of the substep, so a link
+/// moving sideways by `v_t·h` ends up stretched by `≈ (v_t·h)²/(2ℓ)`, a
+/// second-order term the linearised separation `s + (d_b − d_a)·n` cannot
+/// see (before the fix: 18.1 % at the whip, tick 101). The position
+/// iterations therefore re-linearise each rope about the current positions
+/// (non-linear Gauss–Seidel; `relinearise_rope_rows`), which brings the
+/// worst segment to 0.17 %.
 #[test]
-#[ignore = "engine: rope position correction is linearised along the start-of-step \
-            direction; a whipping chain end stretches 18 % (see report)"]
 fn rope_chain_released_horizontal_every_segment_stretch_under_0_5_percent() {
     let mut world = World::new(settings(10.0));
     let links = chain(&mut world, &[0.2; 10], 0.15, 0.05, PI / 2.0);

@@ -29,6 +29,9 @@ pub(crate) struct StepScratch<S: Scalar> {
     pub(crate) rope_rows: Vec<ContactConstraint<S>>,
     /// The constraint slot of each rope row.
     pub(crate) rope_slots: Vec<u32>,
+    /// Each rope row's anchor offset (b − a) at the start of the substep and
+    /// its length, for re-linearising in the position iterations.
+    pub(crate) rope_geometry: Vec<(Vec2<S>, S)>,
     /// Rope rows grouped by shared bodies (chains), for the block solver.
     pub(crate) rope_groups: Vec<Vec<usize>>,
     /// Contact rows grouped by shared bodies, for the block solver.

@@ -6,6 +6,7 @@
 //! sleep → events.
 
 use super::WorldSettings;
+use super::step_constraints::relinearise_rope_rows;
 use super::{Command, CommandOutcome, Event, World, WorldError};
 use crate::collision::StepScratch;
 use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
@@ -116,12 +117,14 @@ impl<S: Scalar> World<S> {
             let StepScratch {
                 rope_rows,
                 rope_groups,
+                rope_geometry,
                 constraints,
                 contact_groups,
                 displacements,
                 rope_block,
                 ..
             } = scratch;
+            relinearise_rope_rows(rope_rows, rope_geometry, displacements);
             solve_group_list_positions(rope_rows, rope_groups, displacements, settings, rope_block);
             solve_group_list_positions(
                 constraints,

@@ -185,6 +185,7 @@ impl<S: Scalar> World<S> {
     pub(crate) fn build_rope_rows(&mut self, h: S, inverse_h: S) {
         self.scratch.rope_rows.clear();
         self.scratch.rope_slots.clear();
+        self.scratch.rope_geometry.clear();
         let margin = self.settings.speculative_margin;
         let threshold = self.settings.restitution_threshold;
         for ci in 0..self.constraint_slots.len() {
@@ -236,6 +237,9 @@ impl<S: Scalar> World<S> {
             self.scratch
                 .rope_slots
                 .push(u32::try_from(ci).unwrap_or(u32::MAX));
+            self.scratch
+                .rope_geometry
+                .push((sb.position - sa.position, max_length));
         }
     }
 
@@ -256,5 +260,30 @@ impl<S: Scalar> World<S> {
                 entry.impulse = row.normal_impulse;
             }
         }
+    }
+}
+
+/// Re-linearises every rope row about the current displacements, so that
+/// the position iterations see the rope's true length.
+///
+/// The rows are built with the direction at the start of the substep, and
+/// the linear estimate `s + (Δb − Δa)·n` misses the second-order stretch
+/// `(v_t·h)²/(2ℓ)` of fast sideways motion (a whipping chain end). Here the
+/// current offset `d = d0 + Δb − Δa` gives the exact slack `L − |d|` and
+/// direction, and the row's separation is re-based so that its linear
+/// estimate is exact at the current displacements: a non-linear
+/// Gauss–Seidel on positions.
+pub(crate) fn relinearise_rope_rows<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    geometry: &[(Vec2<S>, S)],
+    displacements: &[Vec2<S>],
+) {
+    for (row, &(start_offset, max_length)) in rows.iter_mut().zip(geometry) {
+        let moved = displacements[row.b as usize] - displacements[row.a as usize];
+        let Some((direction, length)) = (start_offset + moved).try_normalize_with_length() else {
+            continue;
+        };
+        row.normal = -direction;
+        row.separation = max_length.sub(length).sub(moved.dot(row.normal));
     }
 }
