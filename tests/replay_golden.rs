@@ -32,9 +32,9 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x641cf553379d09a2),
     ("pyramid", 0xd51bbdd0a8f3e472),
-    ("balls", 0xb9b7be1ff34f8885),
-    ("bullets", 0x5e1ff25196078dac),
-    ("mixed", 0xc68601a3546f43bb),
+    ("balls", 0x9ceb3776cfefe21a),
+    ("bullets", 0x434f4116b816a931),
+    ("mixed", 0x5d39d12476bffbe6),
 ];
 // END GOLDEN
 
