@@ -30,11 +30,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0x641cf553379d09a2),
+    ("stack", 0x0442dbffc212cfa7),
     ("pyramid", 0xd51bbdd0a8f3e472),
-    ("balls", 0x9ceb3776cfefe21a),
+    ("balls", 0x4a47b0a4ed96b5e0),
     ("bullets", 0x434f4116b816a931),
-    ("mixed", 0x5d39d12476bffbe6),
+    ("mixed", 0x5cf927410f6872e0),
 ];
 // END GOLDEN
 
