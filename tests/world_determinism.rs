@@ -173,8 +173,12 @@ impl Scene for Mixed {
         let mut out = Vec::new();
         let platform = self.platform.unwrap();
         // The platform oscillates: 1.5 units/s, reversing every second.
-        if tick % 60 == 0 {
-            let s = if (tick / 60) % 2 == 0 { 1.5 } else { -1.5 };
+        if tick.is_multiple_of(60) {
+            let s = if (tick / 60).is_multiple_of(2) {
+                1.5
+            } else {
+                -1.5
+            };
             out.push(Command::SetVelocity {
                 body: platform,
                 velocity: v(s, 0.0),

@@ -432,10 +432,9 @@ pub(crate) fn cast_box<S: Scalar>(
         speed: speed_o,
         ..
     } = other
+        && (exit_o.is_negative() || enter.wide_mul(speed_o) > exit_o.wide_mul(speed))
     {
-        if exit_o.is_negative() || enter.wide_mul(speed_o) > exit_o.wide_mul(speed) {
-            return Cast::Miss;
-        }
+        return Cast::Miss;
     }
     // Reach: enter / speed ≤ s_max. A negative `enter` cannot happen for an
     // origin outside the box (the axis on which it is outside has a

@@ -337,7 +337,7 @@ impl<S: Scalar> Replay<S> {
         let start = self.initial.tick();
         let k = u64::from(self.hash_interval.max(1));
         let regular = (0..=self.ticks / k).map(move |i| start.wrapping_add(i * k));
-        let last = (self.ticks % k != 0).then(|| start.wrapping_add(self.ticks));
+        let last = (!self.ticks.is_multiple_of(k)).then(|| start.wrapping_add(self.ticks));
         regular.chain(last)
     }
 
@@ -360,7 +360,9 @@ impl<S: Scalar> Replay<S> {
         // them, so it is at most K × MAX_CHECKPOINTS.
         let expected = (self.ticks / u64::from(self.hash_interval))
             .saturating_add(1)
-            .saturating_add(u64::from(self.ticks % u64::from(self.hash_interval) != 0));
+            .saturating_add(u64::from(
+                !self.ticks.is_multiple_of(u64::from(self.hash_interval)),
+            ));
         if expected != self.checkpoints.len() as u64 {
             return bad(format!(
                 "{} checkpoints for {} ticks at interval {} ({expected} expected)",

@@ -61,7 +61,7 @@ impl<S: Scalar> Recorder<S> {
             .extend(commands.iter().map(|c| (tick, c.clone())));
         let results = self.world.step_with(commands);
         self.ticks += 1;
-        if self.ticks % u64::from(self.hash_interval) == 0 {
+        if self.ticks.is_multiple_of(u64::from(self.hash_interval)) {
             self.checkpoints.push(Checkpoint::of(&self.world));
         }
         results
@@ -83,7 +83,7 @@ impl<S: Scalar> Recorder<S> {
     /// As [`Recorder::finish`], also giving the world back.
     #[must_use]
     pub fn finish_with_world(mut self) -> (Replay<S>, World<S>) {
-        if self.ticks % u64::from(self.hash_interval) != 0 {
+        if !self.ticks.is_multiple_of(u64::from(self.hash_interval)) {
             self.checkpoints.push(Checkpoint::of(&self.world));
         }
         let replay = Replay {

@@ -94,7 +94,7 @@ pub fn scripted_commands<S: Scalar>(world: &World<S>, seed: u64) -> Vec<Command<
             .fold(S::ZERO, S::max);
         let x = pick(&mut state, &dynamic).map_or(S::ZERO, |(_, _, p)| p.x);
         let x = x.add(S::from_ratio(between(&mut state, -16, 16), 16));
-        let shape = if splitmix(&mut state) % 2 == 0 {
+        let shape = if splitmix(&mut state).is_multiple_of(2) {
             Shape::circle(S::from_ratio(between(&mut state, 4, 8), 16))
         } else {
             Shape::aabb(Vec2::new(
