@@ -5,6 +5,7 @@ use super::broad_phase::Proxy;
 use super::contact_cache::CachedContact;
 use crate::constraints::rope_block::BlockScratch;
 use crate::dynamics::contact_solver::ContactConstraint;
+use crate::dynamics::row_groups::RowGroups;
 use crate::math::{Scalar, Vec2};
 
 /// Per-step working memory.
@@ -33,11 +34,9 @@ pub(crate) struct StepScratch<S: Scalar> {
     /// its length, for re-linearising in the position iterations.
     pub(crate) rope_geometry: Vec<(Vec2<S>, S)>,
     /// Rope rows grouped by shared bodies (chains), for the block solver.
-    pub(crate) rope_groups: Vec<Vec<usize>>,
+    pub(crate) rope_groups: RowGroups,
     /// Contact rows grouped by shared bodies, for the block solver.
-    pub(crate) contact_groups: Vec<Vec<usize>>,
-    /// Group number of each union-find root while grouping rows.
-    pub(crate) group_index: Vec<u32>,
+    pub(crate) contact_groups: RowGroups,
     /// Working memory of the block solver.
     pub(crate) rope_block: BlockScratch<S>,
     /// Pairs touching before the tick (for contact events).

@@ -29,47 +29,6 @@ pub(crate) const MAX_BLOCK: usize = 64;
 /// Active-set rounds per solve.
 const ROUNDS: usize = 4;
 
-/// Groups of rows connected through bodies with finite mass, each sorted
-/// ascending, in order of their first row (deterministic). Linear time: a
-/// union-find over body slots (`slot_count` of them), then one pass.
-pub(crate) fn group_rows<S: Scalar>(
-    rows: &[ContactConstraint<S>],
-    slot_count: usize,
-    parents: &mut Vec<u32>,
-    group_index: &mut Vec<u32>,
-    groups: &mut Vec<Vec<usize>>,
-) {
-    groups.clear();
-    parents.clear();
-    parents.extend((0..slot_count).map(|i| u32::try_from(i).unwrap_or(u32::MAX)));
-    // Join the two ends of every row that are both dynamic.
-    for row in rows {
-        if row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive() {
-            crate::dynamics::islands::union(parents, row.a, row.b);
-        }
-    }
-    // The group of a row is the root of its (first) dynamic end.
-    group_index.clear();
-    group_index.resize(slot_count, u32::MAX);
-    for (r, row) in rows.iter().enumerate() {
-        let end = if row.inverse_mass_b.is_positive() {
-            row.b
-        } else {
-            row.a
-        };
-        let root = crate::dynamics::islands::find(parents, end) as usize;
-        match group_index.get(root).copied() {
-            Some(g) if g != u32::MAX => groups[g as usize].push(r),
-            _ => {
-                if let Some(slot) = group_index.get_mut(root) {
-                    *slot = u32::try_from(groups.len()).unwrap_or(u32::MAX);
-                }
-                groups.push(vec![r]);
-            }
-        }
-    }
-}
-
 /// `A_ij` for rows `p` and `q`.
 fn coupling<S: Scalar>(p: &ContactConstraint<S>, q: &ContactConstraint<S>) -> S {
     let ends = |c: &ContactConstraint<S>| {

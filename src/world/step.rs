@@ -11,11 +11,10 @@ use super::{Command, CommandOutcome, Event, World, WorldError};
 use crate::collision::StepScratch;
 use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
 use crate::constraints::rope_block::BlockScratch;
-use crate::constraints::rope_block::{
-    MAX_BLOCK, group_rows, solve_group_positions, solve_group_velocities,
-};
+use crate::constraints::rope_block::{MAX_BLOCK, solve_group_positions, solve_group_velocities};
 use crate::dynamics::contact_solver::{ContactConstraint, warm_start};
 use crate::dynamics::contact_solver::{solve_friction_row, solve_position_row, solve_velocity_row};
+use crate::dynamics::row_groups::RowGroups;
 use crate::dynamics::{BodyId, BodyKind, islands};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
@@ -81,20 +80,12 @@ impl<S: Scalar> World<S> {
         self.build_rope_rows(h, inverse_h);
         let scratch = &mut self.scratch;
         let slot_count = scratch.velocities.len();
-        group_rows(
-            &scratch.rope_rows,
-            slot_count,
-            &mut scratch.parents,
-            &mut scratch.group_index,
-            &mut scratch.rope_groups,
-        );
-        group_rows(
-            &scratch.constraints,
-            slot_count,
-            &mut scratch.parents,
-            &mut scratch.group_index,
-            &mut scratch.contact_groups,
-        );
+        scratch
+            .rope_groups
+            .regroup(&scratch.rope_rows, slot_count, &mut scratch.parents);
+        scratch
+            .contact_groups
+            .regroup(&scratch.constraints, slot_count, &mut scratch.parents);
         warm_start(&scratch.rope_rows, &mut scratch.velocities);
         warm_start(&scratch.constraints, &mut scratch.velocities);
         for _ in 0..self.settings.velocity_iterations {
@@ -588,22 +579,25 @@ impl<S: Scalar> World<S> {
 /// piles) take plain sequential impulses, whose cost stays linear.
 fn solve_group_list_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
-    groups: &[Vec<usize>],
+    groups: &RowGroups,
     velocities: &mut [Vec2<S>],
     block: &mut BlockScratch<S>,
     always_direct: bool,
 ) {
-    for group in groups {
+    for group in groups.iter() {
         // Bouncing rows (a restitution target above zero) take sequential
         // impulses: solving simultaneous impacts exactly with restitution
         // targets can create energy (three balls meeting at once), while
         // the sequential order dissipates it. Resting and speculative rows
-        // (targets ≤ 0) are where the exact solve pays off.
-        let bouncing = group
-            .iter()
-            .any(|&ri| rows[ri].target_velocity.is_positive());
-        let direct = always_direct || uneven_masses(rows, group);
-        if group.len() == 1 || group.len() > MAX_BLOCK || bouncing || !direct {
+        // (targets ≤ 0) are where the exact solve pays off. The size test
+        // comes first so that big groups (a ball pit) skip both scans.
+        let sequential = group.len() == 1
+            || group.len() > MAX_BLOCK
+            || !(always_direct || uneven_masses(rows, group))
+            || group
+                .iter()
+                .any(|&ri| rows[ri].target_velocity.is_positive());
+        if sequential {
             for &ri in group {
                 solve_velocity_row(&mut rows[ri], velocities);
             }
@@ -639,7 +633,7 @@ fn uneven_masses<S: Scalar>(rows: &[ContactConstraint<S>], group: &[usize]) -> b
 /// One position pass over grouped rows (same split as the velocities).
 fn solve_group_list_positions<S: Scalar>(
     rows: &[ContactConstraint<S>],
-    groups: &[Vec<usize>],
+    groups: &RowGroups,
     displacements: &mut [Vec2<S>],
     settings: &WorldSettings<S>,
     block: &mut BlockScratch<S>,
@@ -650,9 +644,11 @@ fn solve_group_list_positions<S: Scalar>(
         settings.position_correction,
         settings.max_correction,
     );
-    for group in groups {
-        let direct = always_direct || uneven_masses(rows, group);
-        if group.len() == 1 || group.len() > MAX_BLOCK || !direct {
+    for group in groups.iter() {
+        let sequential = group.len() == 1
+            || group.len() > MAX_BLOCK
+            || !(always_direct || uneven_masses(rows, group));
+        if sequential {
             for &ri in group {
                 solve_position_row(&rows[ri], displacements, slop, beta, max);
             }

@@ -1,0 +1,156 @@
+//! Rows (contacts or ropes) grouped by the dynamic bodies they share, stored
+//! flat so that regrouping every substep reuses the same two buffers and
+//! allocates nothing once they have grown to the scene's size.
+
+use crate::dynamics::contact_solver::ContactConstraint;
+use crate::dynamics::islands;
+use crate::math::Scalar;
+
+/// Groups of row indices, each sorted ascending, in the order of their first
+/// row (deterministic). Group `g` is `rows[starts[g]..starts[g + 1]]`.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct RowGroups {
+    /// Row indices, group after group.
+    rows: Vec<usize>,
+    /// Start of each group in `rows`, plus one final entry `rows.len()`.
+    starts: Vec<usize>,
+    /// Group of each row while grouping (working memory).
+    row_group: Vec<u32>,
+    /// Group number of each union-find root while grouping (working memory).
+    root_group: Vec<u32>,
+}
+
+impl RowGroups {
+    /// Regroups `rows`: rows whose ends share a body with finite mass are in
+    /// the same group. Linear time: a union-find over the `slot_count` body
+    /// slots (`parents` is its working memory), then two passes over the
+    /// rows (a counting sort by group keeps each group's rows ascending).
+    pub(crate) fn regroup<S: Scalar>(
+        &mut self,
+        rows: &[ContactConstraint<S>],
+        slot_count: usize,
+        parents: &mut Vec<u32>,
+    ) {
+        islands::reset(parents, slot_count);
+        // Join the two ends of every row that are both dynamic.
+        for row in rows {
+            if row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive() {
+                islands::union(parents, row.a, row.b);
+            }
+        }
+        // The group of a row is the root of its (first) dynamic end; groups
+        // are numbered in the order their first row appears.
+        self.root_group.clear();
+        self.root_group.resize(slot_count, u32::MAX);
+        self.row_group.clear();
+        self.starts.clear();
+        for row in rows {
+            let end = if row.inverse_mass_b.is_positive() {
+                row.b
+            } else {
+                row.a
+            };
+            let root = islands::find(parents, end) as usize;
+            let group = match self.root_group.get(root).copied() {
+                Some(g) if g != u32::MAX => g,
+                _ => {
+                    let g = u32::try_from(self.starts.len()).unwrap_or(u32::MAX);
+                    if let Some(slot) = self.root_group.get_mut(root) {
+                        *slot = g;
+                    }
+                    self.starts.push(0);
+                    g
+                }
+            };
+            self.row_group.push(group);
+            if let Some(count) = self.starts.get_mut(group as usize) {
+                *count += 1;
+            }
+        }
+        // Counts → starts (exclusive prefix sums), then place the rows in
+        // ascending order within their group.
+        let mut next = 0;
+        for entry in &mut self.starts {
+            let count = *entry;
+            *entry = next;
+            next += count;
+        }
+        self.starts.push(next);
+        self.rows.clear();
+        self.rows.resize(rows.len(), 0);
+        for (r, &g) in self.row_group.iter().enumerate() {
+            let cursor = &mut self.starts[g as usize];
+            self.rows[*cursor] = r;
+            *cursor += 1;
+        }
+        // Each start was advanced by its group's size: it now holds the next
+        // group's start. Shift them back by one place.
+        for g in (1..self.starts.len()).rev() {
+            self.starts[g] = self.starts[g - 1];
+        }
+        if let Some(first) = self.starts.first_mut() {
+            *first = 0;
+        }
+    }
+
+    /// The groups in order, each a slice of row indices.
+    pub(crate) fn iter(&self) -> impl Iterator<Item = &[usize]> {
+        self.starts.windows(2).map(|w| &self.rows[w[0]..w[1]])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::{Fx, Vec2};
+
+    fn row(a: u32, b: u32, wa: i32, wb: i32) -> ContactConstraint<Fx> {
+        ContactConstraint::new(
+            a,
+            b,
+            Vec2::Y,
+            Fx::ZERO,
+            Fx::from_int(wa),
+            Fx::from_int(wb),
+            Fx::ZERO,
+            Fx::ZERO,
+            Fx::ZERO,
+        )
+    }
+
+    fn grouped(rows: &[ContactConstraint<Fx>], slots: usize) -> Vec<Vec<usize>> {
+        let mut groups = RowGroups::default();
+        let mut parents = Vec::new();
+        groups.regroup(rows, slots, &mut parents);
+        groups.iter().map(<[usize]>::to_vec).collect()
+    }
+
+    #[test]
+    fn rows_sharing_a_dynamic_body_are_grouped_in_first_row_order() {
+        // Slot 0 is fixed (w = 0): rows touching only it through one dynamic
+        // body do not join each other through it.
+        let rows = [
+            row(0, 3, 0, 1), // group A (body 3)
+            row(1, 2, 1, 1), // group B (bodies 1, 2)
+            row(0, 4, 0, 1), // group C (body 4): shares only the fixed body
+            row(2, 5, 1, 1), // group B
+            row(3, 4, 1, 1), // joins A and C: both become one group
+        ];
+        assert_eq!(grouped(&rows, 6), vec![vec![0, 2, 4], vec![1, 3]]);
+    }
+
+    #[test]
+    fn regrouping_reuses_buffers_and_forgets_old_groups() {
+        let mut groups = RowGroups::default();
+        let mut parents = Vec::new();
+        let first = [row(0, 1, 1, 1), row(2, 3, 1, 1), row(1, 2, 1, 1)];
+        groups.regroup(&first, 4, &mut parents);
+        assert_eq!(groups.iter().count(), 1);
+        let second = [row(0, 1, 1, 1), row(2, 3, 1, 1)];
+        groups.regroup(&second, 4, &mut parents);
+        let got: Vec<Vec<usize>> = groups.iter().map(<[usize]>::to_vec).collect();
+        assert_eq!(got, vec![vec![0], vec![1]]);
+        groups.regroup::<Fx>(&[], 4, &mut parents);
+        assert_eq!(groups.iter().count(), 0);
+    }
+}
