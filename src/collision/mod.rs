@@ -7,5 +7,5 @@ mod scratch;
 
 pub(crate) use broad_phase::{Proxy, ProxyClass, find_pairs};
 pub(crate) use contact_cache::CachedContact;
-pub(crate) use narrow_phase::{contact_between, shape_toi};
+pub(crate) use narrow_phase::{circles_out_of_reach, contact_between, shape_toi};
 pub(crate) use scratch::StepScratch;

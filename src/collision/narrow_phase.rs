@@ -69,3 +69,36 @@ pub(crate) fn shape_toi<S: Scalar>(
         }
     }
 }
+
+/// Whether two circles are certainly too far apart to be in contact this
+/// substep, decided without a square root (a cheap reject before
+/// [`contact_between`], which normalises the centre offset).
+///
+/// The step keeps a pair when `s ≤ margin + max(0, −v_n)·h`, with
+/// `s = |d| − (r_a + r_b)` and `v_n = Δv·n`. Since `|v_n| ≤ |Δv|₂ ≤
+/// |Δv_x| + |Δv_y| = L₁`, the pair is dropped whenever
+/// `|d| > R = r_a + r_b + margin + L₁·h + ε`, i.e. `|d|² > R²`, compared
+/// exactly in the wide type. `ε` absorbs the rounding of the exact test, so
+/// this never drops a pair that test would keep (the result is bit-identical
+/// with or without the reject): the computed `|d|` is at most one ulp low;
+/// the computed normal is off by at most `2 ulp/|d| + 2 ulp` relative, which
+/// moves `v_n·h ≤ L₁·h < |d|` by at most `2 ulp + 2 ulp·R`; the dot product and
+/// the products with `h` round by a few ulps more. `ε = 16 ulp + R/256`
+/// covers all of it for every scalar with at least 9 fraction bits (and the
+/// relative errors of the float references, near 2⁻²³).
+#[inline]
+pub(crate) fn circles_out_of_reach<S: Scalar>(
+    radii: S,
+    offset: Vec2<S>,
+    relative_velocity: Vec2<S>,
+    margin: S,
+    h: S,
+    one_256th: S,
+) -> bool {
+    let speed_bound = relative_velocity.x.abs().add(relative_velocity.y.abs());
+    let reach = radii.add(margin).add(speed_bound.mul(h));
+    let bound = reach
+        .add(reach.mul(one_256th))
+        .add(S::EPSILON.mul_int(16));
+    offset.length_squared_wide() > bound.wide_mul(bound)
+}

@@ -79,9 +79,7 @@ macro_rules! impl_scalar_fixed {
                 // `saturating_mul`, then the result is clamped. Bit-identical
                 // to `saturating_mul`, but without its general 128-bit path.
                 let product = i128::from(self.to_bits()) * i128::from(rhs.to_bits());
-                let shifted = product >> $frac;
-                let clamped = shifted.clamp(i128::from(i64::MIN), i128::from(i64::MAX));
-                <$t>::from_bits(i64::try_from(clamped).unwrap_or(i64::MAX))
+                <$t>::from_bits(super::wide::saturate_to_i64(product >> $frac))
             }
             #[inline]
             fn div(self, rhs: Self) -> Self {

@@ -43,6 +43,28 @@ pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd {
     }
 }
 
+/// `value` clamped to the `i64` range. Within the world bounds products
+/// and sums never leave that range, so the test is one predictable branch
+/// and the clamp sits on a cold path (same result as a plain clamp).
+#[inline(always)]
+pub(crate) fn saturate_to_i64(value: i128) -> i64 {
+    // `as` keeps the low 64 bits; they are the value exactly when the
+    // value fits, which the round trip checks.
+    let low = value as i64;
+    if i128::from(low) == value {
+        low
+    } else {
+        saturate_out_of_range(value)
+    }
+}
+
+/// The cold half of [`saturate_to_i64`]: `value` is outside the `i64` range.
+#[cold]
+#[inline(never)]
+fn saturate_out_of_range(value: i128) -> i64 {
+    if value < 0 { i64::MIN } else { i64::MAX }
+}
+
 macro_rules! impl_wide_fixed {
     ($wide:ty, $narrow:ty, $shift:literal) => {
         impl WideScalar for $wide {
@@ -66,9 +88,7 @@ macro_rules! impl_wide_fixed {
                 // Drop the extra fraction bits with an arithmetic shift
                 // (rounding toward negative infinity, like the `fixed`
                 // crate's conversions), then clamp to the narrow range.
-                let shifted = self.to_bits() >> $shift;
-                let clamped = shifted.clamp(i128::from(i64::MIN), i128::from(i64::MAX));
-                <$narrow>::from_bits(i64::try_from(clamped).unwrap_or(i64::MAX))
+                <$narrow>::from_bits(saturate_to_i64(self.to_bits() >> $shift))
             }
             #[inline]
             fn sqrt_narrow(self) -> $narrow {

@@ -9,14 +9,16 @@ use super::WorldSettings;
 use super::step_constraints::relinearise_rope_rows;
 use super::{Command, CommandOutcome, Event, World, WorldError};
 use crate::collision::StepScratch;
-use crate::collision::{CachedContact, Proxy, ProxyClass, contact_between, find_pairs, shape_toi};
+use crate::collision::{
+    CachedContact, Proxy, ProxyClass, circles_out_of_reach, contact_between, find_pairs, shape_toi,
+};
 use crate::constraints::rope_block::BlockScratch;
 use crate::constraints::rope_block::{MAX_BLOCK, solve_group_positions, solve_group_velocities};
 use crate::dynamics::contact_solver::{ContactConstraint, warm_start};
 use crate::dynamics::contact_solver::{solve_friction_row, solve_position_row, solve_velocity_row};
 use crate::dynamics::row_groups::RowGroups;
 use crate::dynamics::{BodyId, BodyKind, islands};
-use crate::geometry::Toi;
+use crate::geometry::{Shape, Toi};
 use crate::math::{Scalar, Vec2};
 
 impl<S: Scalar> World<S> {
@@ -213,6 +215,7 @@ impl<S: Scalar> World<S> {
         scratch.constraints.clear();
         let mut to_wake = Vec::new();
         let mut cache = self.contacts.iter().peekable();
+        let one_256th = S::ONE.div(S::from_int(256));
         for &(a, b) in &scratch.pairs {
             let (Some(body_a), Some(body_b)) = (
                 self.slots[a as usize].body.as_ref(),
@@ -220,6 +223,21 @@ impl<S: Scalar> World<S> {
             ) else {
                 continue;
             };
+            // Most broad-phase pairs of a ball pit are diagonal neighbours
+            // out of reach: reject them before the square root.
+            if let (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) =
+                (body_a.shape, body_b.shape)
+                && circles_out_of_reach(
+                    ra.add(rb),
+                    body_b.position - body_a.position,
+                    scratch.velocities[b as usize] - scratch.velocities[a as usize],
+                    settings.speculative_margin,
+                    h,
+                    one_256th,
+                )
+            {
+                continue;
+            }
             let contact = contact_between(
                 &body_a.shape,
                 body_a.position,
