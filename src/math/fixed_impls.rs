@@ -92,7 +92,20 @@ macro_rules! impl_scalar_fixed {
                         <$t>::ZERO
                     }
                 } else {
-                    self.saturating_div(rhs)
+                    let (n, d) = (self.to_bits(), rhs.to_bits());
+                    let magnitude = n.unsigned_abs();
+                    if magnitude < 1u64 << (63 - $frac) {
+                        // |n|·2^f < 2^63 fits a u64, so the quotient is one
+                        // machine division instead of a 128-bit one
+                        // (normals, effective masses: small numerators).
+                        // Unsigned division truncates; applying the sign
+                        // afterwards truncates toward zero, as the `fixed`
+                        // crate does. |q| ≤ |n|·2^f < 2^63: no overflow.
+                        let q = ((magnitude << $frac) / d.unsigned_abs()) as i64;
+                        <$t>::from_bits(if (n < 0) == (d < 0) { q } else { -q })
+                    } else {
+                        self.saturating_div(rhs)
+                    }
                 }
             }
             #[inline]
