@@ -132,6 +132,35 @@ macro_rules! impl_scalar_fixed {
                 }
             }
             #[inline]
+            fn mul_add_mul(a: Self, b: Self, c: Self, d: Self) -> Self {
+                // The same exact wide sum as the default method (the wide
+                // type's raw bits are the raw product, with twice the
+                // fraction bits), with the saturation moved off the hot
+                // path: the sum of two products of i64 values overflows
+                // i128 only when both are (−2⁶³)² = 2¹²⁶.
+                let p = i128::from(a.to_bits()) * i128::from(b.to_bits());
+                let q = i128::from(c.to_bits()) * i128::from(d.to_bits());
+                match p.checked_add(q) {
+                    Some(sum) => <$t>::from_bits(super::wide::saturate_to_i64(sum >> $frac)),
+                    None => <$t>::MAX,
+                }
+            }
+            #[inline]
+            fn mul_sub_mul(a: Self, b: Self, c: Self, d: Self) -> Self {
+                // As `mul_add_mul`. A product of i64 values lies in
+                // [−2¹²⁶ + 2⁶³, 2¹²⁶], so |p − q| ≤ 2¹²⁷ − 2⁶³ always fits;
+                // the overflow arms only keep the function total.
+                let p = i128::from(a.to_bits()) * i128::from(b.to_bits());
+                let q = i128::from(c.to_bits()) * i128::from(d.to_bits());
+                match p.checked_sub(q) {
+                    Some(difference) => {
+                        <$t>::from_bits(super::wide::saturate_to_i64(difference >> $frac))
+                    }
+                    None if p > 0 => <$t>::MAX,
+                    None => <$t>::MIN,
+                }
+            }
+            #[inline]
             fn wide_mul(self, rhs: Self) -> $wide {
                 <$t>::wide_mul(self, rhs)
             }
