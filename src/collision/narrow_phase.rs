@@ -97,8 +97,6 @@ pub(crate) fn circles_out_of_reach<S: Scalar>(
 ) -> bool {
     let speed_bound = relative_velocity.x.abs().add(relative_velocity.y.abs());
     let reach = radii.add(margin).add(speed_bound.mul(h));
-    let bound = reach
-        .add(reach.mul(one_256th))
-        .add(S::EPSILON.mul_int(16));
+    let bound = reach.add(reach.mul(one_256th)).add(S::EPSILON.mul_int(16));
     offset.length_squared_wide() > bound.wide_mul(bound)
 }
