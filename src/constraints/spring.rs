@@ -19,7 +19,9 @@ pub(crate) fn theta_for<S: Scalar>(k: S, w: S, h: S) -> S {
     let half = S::ONE.half();
     // q ≥ 2 already means ε ≥ 1/8; cap q before squaring so nothing saturates.
     let q = q.min(S::from_int(4));
-    let epsilon = q.mul(q).div(S::from_int(32)).min(half);
+    // q² ≥ 0, so dividing by 32 (truncation) equals five exact halvings
+    // (each rounds toward −∞): the same bits without a division.
+    let epsilon = q.mul(q).half().half().half().half().half().min(half);
     half.add(epsilon)
 }
 
