@@ -3,6 +3,7 @@
 mod broad_phase;
 mod contact_cache;
 mod narrow_phase;
+mod pair_sort;
 mod scratch;
 
 pub(crate) use broad_phase::{Proxy, ProxyClass, find_pairs};

@@ -1,7 +1,7 @@
 //! Working buffers of a step, reused from step to step so that a world in
 //! steady state allocates nothing. Derived data: never part of the state.
 
-use super::broad_phase::Proxy;
+use super::broad_phase::{BroadPhase, Proxy};
 use super::contact_cache::CachedContact;
 use crate::constraints::rope_block::BlockScratch;
 use crate::dynamics::contact_solver::ContactConstraint;
@@ -11,7 +11,11 @@ use crate::math::{Scalar, Vec2};
 /// Per-step working memory.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct StepScratch<S: Scalar> {
+    /// Swept bounding boxes of the bodies, in slot order.
     pub(crate) proxies: Vec<Proxy<S>>,
+    /// The broad phase's buffers and its x order from the last call.
+    pub(crate) broad_phase: BroadPhase,
+    /// Candidate pairs of the substep, sorted by `(a, b)`.
     pub(crate) pairs: Vec<(u32, u32)>,
     pub(crate) constraints: Vec<ContactConstraint<S>>,
     /// Velocity of each slot during the substep.

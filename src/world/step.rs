@@ -70,7 +70,7 @@ impl<S: Scalar> World<S> {
             self.load_scratch(h);
             self.apply_springs(h);
             self.build_proxies(h);
-            find_pairs(&mut self.scratch.proxies, &mut self.scratch.pairs);
+            find_pairs(&mut self.scratch);
             let to_wake = self.build_constraints(h, inverse_h);
             if to_wake.is_empty() {
                 break;
