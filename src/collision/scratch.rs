@@ -47,6 +47,8 @@ pub(crate) struct StepScratch<S: Scalar> {
     pub(crate) touching_before: Vec<(u32, u32)>,
     /// The other half of the contact cache's double buffer.
     pub(crate) contacts_next: Vec<CachedContact<S>>,
+    /// Whether each slot's body moved this substep (for the contact cache).
+    pub(crate) moving: Vec<bool>,
     /// Per-island least sleep time.
     pub(crate) island_time: Vec<S>,
 }

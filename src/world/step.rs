@@ -327,6 +327,7 @@ impl<S: Scalar> World<S> {
     /// against anything it was paired with, so it cannot pass through.
     fn integrate(&mut self, h: S) {
         let scratch = &mut self.scratch;
+        let mut any_bullet = false;
         for (i, slot) in self.slots.iter().enumerate() {
             let Some(body) = &slot.body else { continue };
             if body.is_moving() {
@@ -334,7 +335,12 @@ impl<S: Scalar> World<S> {
                 // position rule (see crate::constraints).
                 let lagging = scratch.spring_dv[i].scale(h);
                 scratch.displacements[i] = scratch.velocities[i].scale(h) - lagging;
+                any_bullet |= body.bullet && body.is_simulated_dynamic();
             }
+        }
+        // Most worlds have no bullet: skip the pass over every pair.
+        if !any_bullet {
+            return;
         }
         for &(a, b) in &scratch.pairs {
             for (bullet, other) in [(a, b), (b, a)] {
@@ -402,14 +408,17 @@ impl<S: Scalar> World<S> {
         let slop = self.settings.linear_slop;
         let mut fresh = core::mem::take(&mut self.scratch.contacts_next);
         fresh.clear();
+        // Whether each slot moved this substep, read from a dense array
+        // rather than from the bodies (two random body reads per contact).
+        let mut moving = core::mem::take(&mut self.scratch.moving);
+        moving.clear();
+        moving.extend(
+            self.slots
+                .iter()
+                .map(|slot| slot.body.as_ref().is_some_and(|b| b.is_moving())),
+        );
         let scratch = &self.scratch;
-        let slots = &self.slots;
-        let active = |index: u32| {
-            slots[index as usize]
-                .body
-                .as_ref()
-                .is_some_and(|b| b.is_moving())
-        };
+        let active = |index: u32| moving.get(index as usize).copied().unwrap_or(false);
         // Merge (both sorted by pair): the remembered contacts of pairs that
         // were not simulated, and this substep's contacts.
         let mut kept = self
@@ -440,6 +449,7 @@ impl<S: Scalar> World<S> {
             });
         }
         fresh.extend(kept.copied());
+        self.scratch.moving = moving;
         // Double buffer: the old cache becomes next substep's scratch.
         self.scratch.contacts_next = core::mem::replace(&mut self.contacts, fresh);
     }
