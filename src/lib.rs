@@ -31,6 +31,7 @@ pub mod world;
 pub use constraints::{Anchor, Constraint, ConstraintId};
 pub use dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
 pub use math::{Fx, Scalar, Vec2, WideScalar, fx};
+pub use world::QueryIndex;
 pub use world::{
     BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
 };
@@ -41,6 +42,7 @@ pub mod prelude {
     pub use crate::dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
     pub use crate::geometry::*;
     pub use crate::math::{Fx, Scalar, Vec2, WORLD_LIMIT, WideScalar, fx};
+    pub use crate::world::QueryIndex;
     pub use crate::world::{
         BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
     };

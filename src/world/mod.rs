@@ -7,6 +7,7 @@ mod constraints_api;
 mod error;
 mod events;
 mod queries;
+mod query_index;
 mod settings;
 mod step;
 mod step_constraints;
@@ -20,6 +21,7 @@ pub use command::{Command, CommandOutcome};
 pub use error::WorldError;
 pub use events::Event;
 pub use queries::{BodyRayHit, QueryFilter};
+pub use query_index::QueryIndex;
 pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
 
 use crate::Fx;

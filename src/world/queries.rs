@@ -1,5 +1,12 @@
 //! Read-only queries: ray casts, box and point queries. None of them mutates
 //! the world, and all of them return results in a deterministic order.
+//!
+//! These methods test every body: O(n) per query, no set-up cost. That is the
+//! right choice for a few queries per tick. For many (AI sight lines, bullet
+//! sprays, a query per body), build a
+//! [`QueryIndex`](super::QueryIndex) once with
+//! [`World::query_index`] (O(n log n)) and ask it instead: it gives
+//! identical answers, bit for bit, in about O(log n) per query.
 
 use super::World;
 use crate::dynamics::{Body, BodyId, BodyKind};
@@ -38,12 +45,23 @@ impl Default for QueryFilter {
 
 impl QueryFilter {
     fn accepts<S: Scalar>(&self, id: BodyId, body: &Body<S>) -> bool {
-        let kind_ok = match body.kind() {
+        self.accepts_id_kind(id, body.kind())
+    }
+
+    /// The kind part of the filter alone (the query index uses it to skip
+    /// whole subtrees holding no accepted kind).
+    pub(super) fn accepts_kind(&self, kind: BodyKind) -> bool {
+        match kind {
             BodyKind::Fixed => self.fixed,
             BodyKind::Kinematic => self.kinematic,
             BodyKind::Dynamic => self.dynamic,
-        };
-        kind_ok && self.exclude != Some(id)
+        }
+    }
+
+    /// The whole filter, from a body's id and kind: the one definition shared
+    /// by the world's queries and the query index.
+    pub(super) fn accepts_id_kind(&self, id: BodyId, kind: BodyKind) -> bool {
+        self.accepts_kind(kind) && self.exclude != Some(id)
     }
 }
 
@@ -56,11 +74,44 @@ pub struct BodyRayHit<S: Scalar> {
     pub hit: RayHit<S>,
 }
 
-fn ray_shape<S: Scalar>(ray: &Ray<S>, shape: &Shape<S>, position: Vec2<S>) -> Option<RayHit<S>> {
+/// The ray against one body's shape. Shared with the query index, so both
+/// compute every hit with the same calls and get the same bits.
+pub(super) fn ray_shape<S: Scalar>(
+    ray: &Ray<S>,
+    shape: &Shape<S>,
+    position: Vec2<S>,
+) -> Option<RayHit<S>> {
     match *shape {
         Shape::Circle { radius } => ray_circle(ray, &Circle::new(position, radius)),
         Shape::Aabb { half_extents } => ray_aabb(ray, &Aabb::new(position, half_extents)),
     }
+}
+
+/// `true` if the body's shape contains `point` (boundary included). Shared
+/// with the query index.
+pub(super) fn shape_contains_point<S: Scalar>(
+    shape: &Shape<S>,
+    position: Vec2<S>,
+    point: Vec2<S>,
+) -> bool {
+    match *shape {
+        Shape::Circle { radius } => Circle::new(position, radius).contains_point(point),
+        Shape::Aabb { half_extents } => Aabb::new(position, half_extents).contains_point(point),
+    }
+}
+
+/// Sorts hits by distance then id: the order of
+/// [`raycast_all`](World::raycast_all). The sort is stable, so for the float
+/// reference types (where a NaN distance compares equal to everything) the
+/// result also depends on the input order; callers pass hits in id order.
+pub(super) fn sort_hits<S: Scalar>(hits: &mut [BodyRayHit<S>]) {
+    hits.sort_by(|x, y| {
+        x.hit
+            .distance
+            .partial_cmp(&y.hit.distance)
+            .unwrap_or(core::cmp::Ordering::Equal)
+            .then(x.body.cmp(&y.body))
+    });
 }
 
 impl<S: Scalar> World<S> {
@@ -132,13 +183,7 @@ impl<S: Scalar> World<S> {
                 ray_shape(&ray, &body.shape, body.position).map(|hit| BodyRayHit { body: id, hit })
             })
             .collect();
-        hits.sort_by(|x, y| {
-            x.hit
-                .distance
-                .partial_cmp(&y.hit.distance)
-                .unwrap_or(core::cmp::Ordering::Equal)
-                .then(x.body.cmp(&y.body))
-        });
+        sort_hits(&mut hits);
         hits
     }
 
@@ -156,15 +201,7 @@ impl<S: Scalar> World<S> {
     pub fn query_point(&self, point: Vec2<S>, filter: &QueryFilter) -> Vec<BodyId> {
         self.bodies()
             .filter(|(id, body)| {
-                filter.accepts(*id, body)
-                    && match body.shape {
-                        Shape::Circle { radius } => {
-                            Circle::new(body.position, radius).contains_point(point)
-                        }
-                        Shape::Aabb { half_extents } => {
-                            Aabb::new(body.position, half_extents).contains_point(point)
-                        }
-                    }
+                filter.accepts(*id, body) && shape_contains_point(&body.shape, body.position, point)
             })
             .map(|(id, _)| id)
             .collect()
