@@ -92,7 +92,7 @@ pub struct SegmentPoint<S: Scalar = Fx> {
 /// * `t = 1` and `point = b` (exactly) if it falls after `b`;
 /// * otherwise, for `Fx` inside the world bounds, `t` is within ½ ulp and each
 ///   component of `point` within 2 ulps of the exact values (derivation in the
-///   [module docs](self)).
+///   module notes in `src/geometry/closest_point.rs`).
 ///
 /// Never divides by zero, never panics; inputs beyond the world bounds give a
 /// defined (saturated) result with `t` in `[0, 1]`.

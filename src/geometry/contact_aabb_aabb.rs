@@ -65,7 +65,7 @@ use crate::math::{Scalar, Vec2};
 ///
 /// When the boxes are apart on both axes the separation is the larger axis
 /// gap, a conservative lower bound on the Euclidean gap (see the
-/// [module docs](self) for why). Equal gaps pick the y axis; a zero centre
+/// module notes in `src/geometry/contact_aabb_aabb.rs` for why). Equal gaps pick the y axis; a zero centre
 /// offset on the chosen axis gives the positive axis.
 ///
 /// ```

@@ -53,7 +53,7 @@ use crate::math::{Scalar, Vec2};
 /// box, minus the radius) and inside it (least-penetration face: separation
 /// `−(distance to that face + radius)`). A zero offset on the chosen axis
 /// gives the positive axis: a circle centred on a square box gets `+Y`. See
-/// the [module docs](self) for the derivation, accuracy and degenerate cases.
+/// the module notes in `src/geometry/contact_circle_aabb.rs` for the derivation, accuracy and degenerate cases.
 ///
 /// ```
 /// use clockwork2d::prelude::*;

@@ -37,7 +37,7 @@ use crate::math::{Scalar, Vec2};
 /// Coincident centres give the normal `+Y` `(0, 1)` and the separation
 /// `−(r_a + r_b)` (pushing `b` up by `r_a + r_b` separates them).
 /// Accuracy for `Fx`: separation within 1 ulp (rounded down), normal within
-/// `ulp·(1 + 1/distance)` per component; see the [module docs](self).
+/// `ulp·(1 + 1/distance)` per component; see the module notes in `src/geometry/contact_circle_circle.rs`.
 ///
 /// ```
 /// use clockwork2d::prelude::*;

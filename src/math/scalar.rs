@@ -39,7 +39,7 @@ use super::wide::WideScalar;
 /// measure error (floats are not bit-identical across targets in general and
 /// must not be used for lockstep).
 ///
-/// All arithmetic methods saturate; see the [module docs](self).
+/// All arithmetic methods saturate; see the module notes in `src/math/scalar.rs`.
 ///
 /// ```
 /// use clockwork2d::prelude::*;

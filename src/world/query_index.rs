@@ -480,7 +480,7 @@ impl<S: Scalar> RaySetup<S> {
 /// Build it with [`World::query_index`] (O(n log n)) when a tick needs many
 /// queries; for one or two, the [`World`] methods are cheaper (no build).
 /// It borrows the world, so the world cannot change while it lives: it can
-/// never be out of date. See the [module docs](self) for the design and the
+/// never be out of date. See the module notes in `src/world/query_index.rs` for the design and the
 /// argument that it never misses a body.
 ///
 /// For the float reference scalars (`f64`, `f32`) the grown boxes' margin is
