@@ -196,9 +196,18 @@ pub(crate) fn solve_velocity_row<S: Scalar>(
 
     // Normal: drive v_n to at least the target, accumulated λ ≥ 0.
     let old_n = c.normal_impulse;
-    let lambda = c.target_velocity.sub(vn).mul(c.effective_mass);
-    c.normal_impulse = old_n.add(lambda).max(S::ZERO);
-    let dn = c.normal_impulse.sub(old_n);
+    let shortfall = c.target_velocity.sub(vn);
+    // An idle row (no accumulated impulse, already at or above its target:
+    // a speculative contact that is not closing) stays idle: λ = shortfall·m
+    // ≤ 0 (the product rounds toward −∞ but cannot turn positive) and the
+    // clamp keeps the impulse at zero. Skip the product; same bits.
+    let dn = if old_n == S::ZERO && !shortfall.is_positive() {
+        S::ZERO
+    } else {
+        let lambda = shortfall.mul(c.effective_mass);
+        c.normal_impulse = old_n.add(lambda).max(S::ZERO);
+        c.normal_impulse.sub(old_n)
+    };
     if dn != S::ZERO || dt != S::ZERO {
         apply_row(c, dn, dt, velocities);
     }
@@ -222,6 +231,12 @@ pub(crate) fn solve_position_row<S: Scalar>(
     let separation = c
         .separation
         .add((displacements[ib] - displacements[ia]).dot(c.normal));
+    // Within the slop (or apart): β·C ≥ 0 clamps to zero below, so skip the
+    // product (β > 0 and rounding toward −∞ keeps a non-negative product
+    // non-negative). Same bits, one multiply less for most rows.
+    if !separation.add(slop).is_negative() {
+        return;
+    }
     // C ≤ 0 is the penetration beyond the slop, scaled and bounded.
     let correction = beta
         .mul(separation.add(slop))
