@@ -100,3 +100,166 @@ pub(crate) fn circles_out_of_reach<S: Scalar>(
     let bound = reach.add(reach.mul(one_256th)).add(S::EPSILON.mul_int(16));
     offset.length_squared_wide() > bound.wide_mul(bound)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::math::Fx;
+    use fixed::types::I48F16;
+    use proptest::prelude::*;
+
+    /// The step's exact keep test (see `World::build_constraints`): keep the
+    /// pair when `s ≤ margin + max(0, −v_n)·h`.
+    fn exact_keeps<S: Scalar>(
+        ra: S,
+        rb: S,
+        pa: Vec2<S>,
+        pb: Vec2<S>,
+        dv: Vec2<S>,
+        margin: S,
+        h: S,
+    ) -> bool {
+        let contact = contact_between(
+            &Shape::Circle { radius: ra },
+            pa,
+            &Shape::Circle { radius: rb },
+            pb,
+        );
+        let vn = dv.dot(contact.normal);
+        let reach = margin.add(vn.neg().max(S::ZERO).mul(h));
+        contact.separation <= reach
+    }
+
+    fn check<S: Scalar>(values: [f64; 9]) {
+        let [ra, rb, ax, ay, bx, by, vx, vy, hh] = values.map(S::from_f64);
+        let margin = S::from_f64(0.1);
+        let h = hh.abs();
+        let (pa, pb, dv) = (Vec2::new(ax, ay), Vec2::new(bx, by), Vec2::new(vx, vy));
+        let one_256th = S::ONE.div(S::from_int(256));
+        if circles_out_of_reach(ra.add(rb), pb - pa, dv, margin, h, one_256th) {
+            assert!(
+                !exact_keeps(ra, rb, pa, pb, dv, margin, h),
+                "{}: rejected a pair the exact test keeps: {values:?}",
+                S::NAME
+            );
+        }
+    }
+
+    fn inputs() -> impl Strategy<Value = [f64; 9]> {
+        // Radii from tiny to large, positions within the world bounds (often
+        // near contact: the reject's edge), velocities up to the default
+        // speed limit, substeps from 1/64 to one second.
+        let radius = prop_oneof![0.0001f64..0.01, 0.01f64..2.0, 2.0f64..500.0];
+        let coordinate = prop_oneof![-4.0f64..4.0, -32_000.0f64..32_000.0];
+        let speed = prop_oneof![-10.0f64..10.0, -4096.0f64..4096.0];
+        let h = prop_oneof![Just(1.0 / 60.0), 1.0f64 / 64.0..1.0];
+        (
+            radius.clone(),
+            radius,
+            coordinate.clone(),
+            coordinate.clone(),
+            -3.0f64..3.0,
+            -3.0f64..3.0,
+            speed.clone(),
+            speed,
+            h,
+        )
+            .prop_map(|(ra, rb, ax, ay, dx, dy, vx, vy, h)| {
+                [ra, rb, ax, ay, ax + dx, ay + dy, vx, vy, h]
+            })
+    }
+
+    /// Pairs on the edge of the keep test: closing along the centre line at
+    /// speed `v`, centres `r_a + r_b + margin + v·h + δ` apart with δ a few
+    /// hundred ulps either way, along axis and diagonal directions — where
+    /// the reject's bound `L₁ ≥ |v_n|` is tight (axes) or loose (diagonals).
+    fn edge_inputs() -> impl Strategy<Value = [f64; 9]> {
+        let direction = prop_oneof![
+            Just((1.0f64, 0.0f64)),
+            Just((0.0, 1.0)),
+            Just((0.6, 0.8)),
+            Just((0.8, -0.6)),
+            Just((
+                std::f64::consts::FRAC_1_SQRT_2,
+                std::f64::consts::FRAC_1_SQRT_2
+            )),
+            Just((-5.0 / 13.0, 12.0 / 13.0)),
+        ];
+        (
+            0.01f64..2.0,
+            0.01f64..2.0,
+            -1000.0f64..1000.0,
+            -1000.0f64..1000.0,
+            direction,
+            0.0f64..200.0,
+            -300i32..300,
+            prop_oneof![Just(1.0 / 60.0), 1.0f64 / 64.0..0.5],
+        )
+            .prop_map(|(ra, rb, ax, ay, (ux, uy), v, ulps, h)| {
+                let gap = ra + rb + 0.1 + v * h + f64::from(ulps) * 2f64.powi(-32);
+                [
+                    ra,
+                    rb,
+                    ax,
+                    ay,
+                    ax + ux * gap,
+                    ay + uy * gap,
+                    -ux * v,
+                    -uy * v,
+                    h,
+                ]
+            })
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(4096))]
+
+        /// The same on the edge of the keep test.
+        #[test]
+        fn reject_never_drops_a_kept_pair_on_the_edge(values in edge_inputs()) {
+            check::<Fx>(values);
+            check::<I48F16>(values);
+            check::<f64>(values);
+            check::<f32>(values);
+        }
+
+        /// The square-root-free reject only drops pairs the exact test
+        /// drops (so the step's result is the same with or without it).
+        #[test]
+        fn reject_never_drops_a_kept_pair(values in inputs()) {
+            check::<Fx>(values);
+            check::<I48F16>(values);
+            check::<f64>(values);
+            check::<f32>(values);
+        }
+    }
+
+    #[test]
+    fn reject_drops_far_pairs_and_keeps_touching_ones() {
+        let one_256th = Fx::ONE.div(Fx::from_int(256));
+        let (radii, margin, h) = (Fx::ONE, Fx::from_f64(0.1), Fx::from_f64(1.0 / 60.0));
+        let far = Vec2::new(Fx::from_int(2), Fx::ZERO);
+        let touching = Vec2::new(Fx::ONE, Fx::ZERO);
+        assert!(circles_out_of_reach(
+            radii,
+            far,
+            Vec2::ZERO,
+            margin,
+            h,
+            one_256th
+        ));
+        assert!(!circles_out_of_reach(
+            radii,
+            touching,
+            Vec2::ZERO,
+            margin,
+            h,
+            one_256th
+        ));
+        // Closing fast enough to cover the gap within the substep: kept.
+        let closing = Vec2::new(Fx::from_int(-60), Fx::ZERO);
+        assert!(!circles_out_of_reach(
+            radii, far, closing, margin, h, one_256th
+        ));
+    }
+}
