@@ -102,6 +102,7 @@ pub(crate) fn circles_out_of_reach<S: Scalar>(
 }
 
 #[cfg(test)]
+#[allow(clippy::float_arithmetic)] // test inputs are built in f64
 mod tests {
     use super::*;
     use crate::math::Fx;
