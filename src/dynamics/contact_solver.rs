@@ -136,11 +136,22 @@ fn apply_row<S: Scalar>(c: &ContactConstraint<S>, dn: S, dt: S, velocities: &mut
             S::mul_add_mul(p.y, dn, p.x, dt),
         )
     };
-    if c.inverse_mass_a.is_positive() {
-        velocities[c.a as usize] -= delta(c.push_a);
-    }
-    if c.inverse_mass_b.is_positive() {
-        velocities[c.b as usize] += delta(c.push_b);
+    match (c.inverse_mass_a.is_positive(), c.inverse_mass_b.is_positive()) {
+        (true, true) => {
+            let change_a = delta(c.push_a);
+            // Equal masses (a ball pit, a stack of equal boxes) give equal
+            // push vectors, hence the same change: compute it once.
+            let change_b = if c.push_b == c.push_a {
+                change_a
+            } else {
+                delta(c.push_b)
+            };
+            velocities[c.a as usize] -= change_a;
+            velocities[c.b as usize] += change_b;
+        }
+        (true, false) => velocities[c.a as usize] -= delta(c.push_a),
+        (false, true) => velocities[c.b as usize] += delta(c.push_b),
+        (false, false) => {}
     }
 }
 
