@@ -69,6 +69,31 @@ impl<S: Scalar> ContactConstraint<S> {
         normal_impulse: S,
         tangent_impulse: S,
     ) -> Self {
+        Self::with_effective_mass(
+            a,
+            b,
+            normal,
+            separation,
+            (inverse_mass_a, inverse_mass_b),
+            effective_mass(inverse_mass_a, inverse_mass_b),
+            friction,
+            (normal_impulse, tangent_impulse),
+        )
+    }
+
+    /// [`new`](Self::new) with `1 / (w_a + w_b)` given (the narrow phase
+    /// reuses it across the many pairs of equal masses).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn with_effective_mass(
+        a: u32,
+        b: u32,
+        normal: Vec2<S>,
+        separation: S,
+        (inverse_mass_a, inverse_mass_b): (S, S),
+        effective_mass: S,
+        friction: S,
+        (normal_impulse, tangent_impulse): (S, S),
+    ) -> Self {
         ContactConstraint {
             a,
             b,
@@ -76,8 +101,7 @@ impl<S: Scalar> ContactConstraint<S> {
             separation,
             inverse_mass_a,
             inverse_mass_b,
-            // The caller guarantees a positive sum: no division by zero.
-            effective_mass: S::ONE.div(inverse_mass_a.add(inverse_mass_b)),
+            effective_mass,
             friction,
             target_velocity: S::ZERO,
             normal_impulse,
@@ -114,6 +138,13 @@ impl<S: Scalar> ContactConstraint<S> {
     }
 }
 
+/// `1 / (w_a + w_b)`, the effective mass of a row along any direction.
+/// The caller guarantees a positive sum: no division by zero.
+#[inline]
+pub(crate) fn effective_mass<S: Scalar>(inverse_mass_a: S, inverse_mass_b: S) -> S {
+    S::ONE.div(inverse_mass_a.add(inverse_mass_b))
+}
+
 /// Applies the warm-start impulses.
 pub(crate) fn warm_start<S: Scalar>(
     constraints: &[ContactConstraint<S>],
@@ -136,7 +167,10 @@ fn apply_row<S: Scalar>(c: &ContactConstraint<S>, dn: S, dt: S, velocities: &mut
             S::mul_add_mul(p.y, dn, p.x, dt),
         )
     };
-    match (c.inverse_mass_a.is_positive(), c.inverse_mass_b.is_positive()) {
+    match (
+        c.inverse_mass_a.is_positive(),
+        c.inverse_mass_b.is_positive(),
+    ) {
         (true, true) => {
             let change_a = delta(c.push_a);
             // Equal masses (a ball pit, a stack of equal boxes) give equal

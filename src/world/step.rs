@@ -14,7 +14,7 @@ use crate::collision::{
 };
 use crate::constraints::rope_block::BlockScratch;
 use crate::constraints::rope_block::{MAX_BLOCK, solve_group_positions, solve_group_velocities};
-use crate::dynamics::contact_solver::{ContactConstraint, warm_start};
+use crate::dynamics::contact_solver::{ContactConstraint, effective_mass, warm_start};
 use crate::dynamics::contact_solver::{solve_friction_row, solve_position_row, solve_velocity_row};
 use crate::dynamics::row_groups::RowGroups;
 use crate::dynamics::{BodyId, BodyKind, islands};
@@ -216,6 +216,9 @@ impl<S: Scalar> World<S> {
         let mut to_wake = Vec::new();
         let mut cache = self.contacts.iter().peekable();
         let one_256th = S::ONE.div(S::from_int(256));
+        // The last inverse-mass sum and its reciprocal: piles of equal
+        // masses need one division, not one per pair (same value).
+        let mut last_mass = (S::ZERO, S::ZERO);
         for &(a, b) in &scratch.pairs {
             let (Some(body_a), Some(body_b)) = (
                 self.slots[a as usize].body.as_ref(),
@@ -298,16 +301,18 @@ impl<S: Scalar> World<S> {
                 body_a.friction.mul(body_b.friction).sqrt()
             };
             let restitution = body_a.restitution.max(body_b.restitution);
-            let mut constraint = ContactConstraint::new(
+            if sum != last_mass.0 {
+                last_mass = (sum, effective_mass(wa, wb));
+            }
+            let mut constraint = ContactConstraint::with_effective_mass(
                 a,
                 b,
                 contact.normal,
                 contact.separation,
-                wa,
-                wb,
+                (wa, wb),
+                last_mass.1,
                 friction,
-                normal_impulse,
-                tangent_impulse,
+                (normal_impulse, tangent_impulse),
             );
             constraint.prepare_target(
                 vn,
