@@ -94,6 +94,12 @@ impl<S: Scalar> ContactConstraint<S> {
         friction: S,
         (normal_impulse, tangent_impulse): (S, S),
     ) -> Self {
+        let push_a = normal.scale(inverse_mass_a);
+        let push_b = if inverse_mass_b == inverse_mass_a {
+            push_a
+        } else {
+            normal.scale(inverse_mass_b)
+        };
         ContactConstraint {
             a,
             b,
@@ -106,8 +112,8 @@ impl<S: Scalar> ContactConstraint<S> {
             target_velocity: S::ZERO,
             normal_impulse,
             tangent_impulse,
-            push_a: normal.scale(inverse_mass_a),
-            push_b: normal.scale(inverse_mass_b),
+            push_a,
+            push_b,
         }
     }
 
