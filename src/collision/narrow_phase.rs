@@ -93,11 +93,12 @@ pub(crate) fn circles_out_of_reach<S: Scalar>(
     relative_velocity: Vec2<S>,
     margin: S,
     h: S,
-    one_256th: S,
 ) -> bool {
     let speed_bound = relative_velocity.x.abs().add(relative_velocity.y.abs());
     let reach = radii.add(margin).add(speed_bound.mul(h));
-    let bound = reach.add(reach.mul(one_256th)).add(S::EPSILON.mul_int(16));
+    // R/256 as eight halvings (a shift for fixed point, no division).
+    let reach_256th = (0..8).fold(reach, |r, _| r.half());
+    let bound = reach.add(reach_256th).add(S::EPSILON.mul_int(16));
     offset.length_squared_wide() > bound.wide_mul(bound)
 }
 
@@ -136,8 +137,7 @@ mod tests {
         let margin = S::from_f64(0.1);
         let h = hh.abs();
         let (pa, pb, dv) = (Vec2::new(ax, ay), Vec2::new(bx, by), Vec2::new(vx, vy));
-        let one_256th = S::ONE.div(S::from_int(256));
-        if circles_out_of_reach(ra.add(rb), pb - pa, dv, margin, h, one_256th) {
+        if circles_out_of_reach(ra.add(rb), pb - pa, dv, margin, h) {
             assert!(
                 !exact_keeps(ra, rb, pa, pb, dv, margin, h),
                 "{}: rejected a pair the exact test keeps: {values:?}",
@@ -237,30 +237,19 @@ mod tests {
 
     #[test]
     fn reject_drops_far_pairs_and_keeps_touching_ones() {
-        let one_256th = Fx::ONE.div(Fx::from_int(256));
         let (radii, margin, h) = (Fx::ONE, Fx::from_f64(0.1), Fx::from_f64(1.0 / 60.0));
         let far = Vec2::new(Fx::from_int(2), Fx::ZERO);
         let touching = Vec2::new(Fx::ONE, Fx::ZERO);
-        assert!(circles_out_of_reach(
-            radii,
-            far,
-            Vec2::ZERO,
-            margin,
-            h,
-            one_256th
-        ));
+        assert!(circles_out_of_reach(radii, far, Vec2::ZERO, margin, h,));
         assert!(!circles_out_of_reach(
             radii,
             touching,
             Vec2::ZERO,
             margin,
             h,
-            one_256th
         ));
         // Closing fast enough to cover the gap within the substep: kept.
         let closing = Vec2::new(Fx::from_int(-60), Fx::ZERO);
-        assert!(!circles_out_of_reach(
-            radii, far, closing, margin, h, one_256th
-        ));
+        assert!(!circles_out_of_reach(radii, far, closing, margin, h));
     }
 }

@@ -54,37 +54,13 @@ pub(crate) struct ContactConstraint<S: Scalar> {
 
 impl<S: Scalar> ContactConstraint<S> {
     /// A row between slots `a` and `b` with normal `normal` (from a to b),
-    /// separation, inverse masses (`w_a + w_b > 0`), friction and
-    /// warm-start impulses; the target is set by
+    /// separation, inverse masses `(w_a, w_b)` with `w_a + w_b > 0`, their
+    /// [`effective_mass`] (passed in so that the narrow phase can reuse it
+    /// across the many pairs of equal masses), friction and warm-start
+    /// impulses `(normal, tangent)`; the target is set by
     /// [`prepare_target`](Self::prepare_target).
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn new(
-        a: u32,
-        b: u32,
-        normal: Vec2<S>,
-        separation: S,
-        inverse_mass_a: S,
-        inverse_mass_b: S,
-        friction: S,
-        normal_impulse: S,
-        tangent_impulse: S,
-    ) -> Self {
-        Self::with_effective_mass(
-            a,
-            b,
-            normal,
-            separation,
-            (inverse_mass_a, inverse_mass_b),
-            effective_mass(inverse_mass_a, inverse_mass_b),
-            friction,
-            (normal_impulse, tangent_impulse),
-        )
-    }
-
-    /// [`new`](Self::new) with `1 / (w_a + w_b)` given (the narrow phase
-    /// reuses it across the many pairs of equal masses).
-    #[allow(clippy::too_many_arguments)]
-    pub(crate) fn with_effective_mass(
         a: u32,
         b: u32,
         normal: Vec2<S>,

@@ -13,7 +13,7 @@ use crate::collision::{
     CachedContact, Proxy, ProxyClass, circles_out_of_reach, contact_between, find_pairs, shape_toi,
 };
 use crate::constraints::rope_block::BlockScratch;
-use crate::constraints::rope_block::{MAX_BLOCK, solve_group_positions, solve_group_velocities};
+use crate::constraints::rope_block::{solve_group_positions, solve_group_velocities};
 use crate::dynamics::contact_solver::{ContactConstraint, effective_mass, warm_start};
 use crate::dynamics::contact_solver::{solve_friction_row, solve_position_row, solve_velocity_row};
 use crate::dynamics::row_groups::RowGroups;
@@ -88,6 +88,8 @@ impl<S: Scalar> World<S> {
         scratch
             .contact_groups
             .regroup(&scratch.constraints, slot_count, &mut scratch.parents);
+        scratch.rope_groups.classify(&scratch.rope_rows, true);
+        scratch.contact_groups.classify(&scratch.constraints, false);
         warm_start(&scratch.rope_rows, &mut scratch.velocities);
         warm_start(&scratch.constraints, &mut scratch.velocities);
         for _ in 0..self.settings.velocity_iterations {
@@ -100,8 +102,8 @@ impl<S: Scalar> World<S> {
                 rope_block,
                 ..
             } = scratch;
-            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block, true);
-            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block, false);
+            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block);
+            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block);
         }
         self.integrate(h);
         let settings = &self.settings;
@@ -118,21 +120,13 @@ impl<S: Scalar> World<S> {
                 ..
             } = scratch;
             relinearise_rope_rows(rope_rows, rope_geometry, displacements);
-            solve_group_list_positions(
-                rope_rows,
-                rope_groups,
-                displacements,
-                settings,
-                rope_block,
-                true,
-            );
+            solve_group_list_positions(rope_rows, rope_groups, displacements, settings, rope_block);
             solve_group_list_positions(
                 constraints,
                 contact_groups,
                 displacements,
                 settings,
                 rope_block,
-                false,
             );
         }
         self.write_back();
@@ -215,7 +209,6 @@ impl<S: Scalar> World<S> {
         scratch.constraints.clear();
         let mut to_wake = Vec::new();
         let mut cache = self.contacts.iter().peekable();
-        let one_256th = S::ONE.div(S::from_int(256));
         // The last inverse-mass sum and its reciprocal: piles of equal
         // masses need one division, not one per pair (same value).
         let mut last_mass = (S::ZERO, S::ZERO);
@@ -236,7 +229,6 @@ impl<S: Scalar> World<S> {
                     scratch.velocities[b as usize] - scratch.velocities[a as usize],
                     settings.speculative_margin,
                     h,
-                    one_256th,
                 )
             {
                 continue;
@@ -304,7 +296,7 @@ impl<S: Scalar> World<S> {
             if sum != last_mass.0 {
                 last_mass = (sum, effective_mass(wa, wb));
             }
-            let mut constraint = ContactConstraint::with_effective_mass(
+            let mut constraint = ContactConstraint::new(
                 a,
                 b,
                 contact.normal,
@@ -605,62 +597,28 @@ impl<S: Scalar> World<S> {
     }
 }
 
-/// One velocity pass over grouped rows (ropes or contacts). A group of
-/// 2..=[`MAX_BLOCK`] rows (a chain, a small stack, a heavy box on a light
-/// one) has its normal impulses solved exactly by the block solver, then
-/// its friction by sequential impulses; single rows and large groups (big
-/// piles) take plain sequential impulses, whose cost stays linear.
+/// One velocity pass over grouped rows (ropes or contacts), each group the
+/// way [`RowGroups::classify`] decided: directly (the block solver for the
+/// normal impulses, then friction by sequential impulses) or by sequential
+/// impulses.
 fn solve_group_list_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
     groups: &RowGroups,
     velocities: &mut [Vec2<S>],
     block: &mut BlockScratch<S>,
-    always_direct: bool,
 ) {
-    for group in groups.iter() {
-        // Bouncing rows (a restitution target above zero) take sequential
-        // impulses: solving simultaneous impacts exactly with restitution
-        // targets can create energy (three balls meeting at once), while
-        // the sequential order dissipates it. Resting and speculative rows
-        // (targets ≤ 0) are where the exact solve pays off. The size test
-        // comes first so that big groups (a ball pit) skip both scans.
-        let sequential = group.len() == 1
-            || group.len() > MAX_BLOCK
-            || !(always_direct || uneven_masses(rows, group))
-            || group
-                .iter()
-                .any(|&ri| rows[ri].target_velocity.is_positive());
-        if sequential {
-            for &ri in group {
-                solve_velocity_row(&mut rows[ri], velocities);
-            }
-        } else {
+    for (group, direct, _) in groups.iter_classified() {
+        if direct {
             solve_group_velocities(rows, group, velocities, block);
             for &ri in group {
                 solve_friction_row(&mut rows[ri], velocities);
             }
-        }
-    }
-}
-
-/// Whether the dynamic bodies of a contact group differ in inverse mass by
-/// 4× or more. Sequential impulses converge at a rate of about
-/// `1 − w_min/(w_min + w_max)` per sweep, so groups of equal masses (stacks,
-/// ball piles) converge well with them and skip the cost of the direct
-/// solve, while a heavy body on a light one (1:100) needs it. Ropes are
-/// always solved directly: a chain converges slowly even with equal masses.
-fn uneven_masses<S: Scalar>(rows: &[ContactConstraint<S>], group: &[usize]) -> bool {
-    let mut low = S::MAX;
-    let mut high = S::ZERO;
-    for &ri in group {
-        for w in [rows[ri].inverse_mass_a, rows[ri].inverse_mass_b] {
-            if w.is_positive() {
-                low = low.min(w);
-                high = high.max(w);
+        } else {
+            for &ri in group {
+                solve_velocity_row(&mut rows[ri], velocities);
             }
         }
     }
-    high >= low.mul_int(4)
 }
 
 /// One position pass over grouped rows (same split as the velocities).
@@ -670,23 +628,19 @@ fn solve_group_list_positions<S: Scalar>(
     displacements: &mut [Vec2<S>],
     settings: &WorldSettings<S>,
     block: &mut BlockScratch<S>,
-    always_direct: bool,
 ) {
     let (slop, beta, max) = (
         settings.linear_slop,
         settings.position_correction,
         settings.max_correction,
     );
-    for group in groups.iter() {
-        let sequential = group.len() == 1
-            || group.len() > MAX_BLOCK
-            || !(always_direct || uneven_masses(rows, group));
-        if sequential {
+    for (group, _, direct) in groups.iter_classified() {
+        if direct {
+            solve_group_positions(rows, group, displacements, slop, beta, max, block);
+        } else {
             for &ri in group {
                 solve_position_row(&rows[ri], displacements, slop, beta, max);
             }
-        } else {
-            solve_group_positions(rows, group, displacements, slop, beta, max, block);
         }
     }
 }

@@ -8,7 +8,7 @@
 use super::World;
 use crate::constraints::spring::{spring_impulse, theta_for};
 use crate::constraints::{Anchor, Constraint};
-use crate::dynamics::contact_solver::ContactConstraint;
+use crate::dynamics::contact_solver::{ContactConstraint, effective_mass};
 use crate::math::{Scalar, Vec2};
 
 /// Where an anchor is this substep, how it moves, and which solver slot
@@ -226,11 +226,10 @@ impl<S: Scalar> World<S> {
                 sb.slot,
                 normal,
                 slack,
-                sa.inverse_mass,
-                sb.inverse_mass,
+                (sa.inverse_mass, sb.inverse_mass),
+                effective_mass(sa.inverse_mass, sb.inverse_mass),
                 S::ZERO,
-                warm,
-                S::ZERO,
+                (warm, S::ZERO),
             );
             row.prepare_target(vn, restitution, threshold, h, inverse_h);
             self.scratch.rope_rows.push(row);
