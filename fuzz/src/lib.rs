@@ -1,0 +1,17 @@
+//! Helpers shared by the fuzz targets in `fuzz_targets/`.
+//!
+//! * [`frame`]: repairs the frame of a mutated snapshot or replay (payload
+//!   length and checksum), so that mutations reach the decoder and the
+//!   validation instead of stopping at the checksum.
+//! * [`roundtrip`]: the snapshot round-trip invariant every accepted world
+//!   must satisfy.
+//! * [`world_script`]: the structured input of the stateful target and its
+//!   invariant checks.
+//! * [`numbers`]: arbitrary scalars that hit the interesting values (zero,
+//!   one ulp, the documented limits and just past them) far more often
+//!   than uniform bits would.
+#![forbid(unsafe_code)]
+
+pub mod frame;
+pub mod numbers;
+pub mod roundtrip;
