@@ -26,6 +26,7 @@ pub mod math;
 pub mod replay;
 pub mod scene;
 pub mod snapshot;
+mod solver;
 pub mod world;
 
 pub use constraints::{Anchor, Constraint, ConstraintId};

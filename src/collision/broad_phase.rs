@@ -47,8 +47,8 @@
 //! in steady state allocates nothing here.
 
 use super::pair_sort::sort_keys;
-use super::scratch::StepScratch;
 use crate::math::Scalar;
+use crate::solver::StepContext;
 
 /// How a proxy takes part in pairing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -188,8 +188,8 @@ pub(crate) struct BroadPhase {
 /// Writes the overlapping pairs of `scratch.proxies` into `scratch.pairs`
 /// (see [`BroadPhase::find_pairs`]), with `scratch.broad_phase` as working
 /// memory.
-pub(crate) fn find_pairs<S: Scalar>(scratch: &mut StepScratch<S>) {
-    let StepScratch {
+pub(crate) fn find_pairs<S: Scalar>(scratch: &mut StepContext<S>) {
+    let StepContext {
         proxies,
         broad_phase,
         pairs,

@@ -4,9 +4,7 @@ mod broad_phase;
 mod contact_cache;
 mod narrow_phase;
 mod pair_sort;
-mod scratch;
 
-pub(crate) use broad_phase::{Proxy, ProxyClass, find_pairs};
+pub(crate) use broad_phase::{BroadPhase, Proxy, ProxyClass, find_pairs};
 pub(crate) use contact_cache::CachedContact;
 pub(crate) use narrow_phase::{circles_out_of_reach, contact_between, shape_toi};
-pub(crate) use scratch::StepScratch;

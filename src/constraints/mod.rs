@@ -45,7 +45,6 @@
 mod anchor;
 mod constraint;
 mod constraint_id;
-pub(crate) mod rope_block;
 pub(crate) mod spring;
 
 use serde::{Deserialize, Serialize};

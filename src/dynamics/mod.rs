@@ -1,10 +1,8 @@
-//! Bodies, ids, the contact solver and sleeping.
+//! Bodies, their ids, and islands (union-find) for sleeping and grouping.
 
 mod body;
 mod body_id;
-pub(crate) mod contact_solver;
 pub(crate) mod islands;
-pub(crate) mod row_groups;
 
 pub(crate) use body::NO_ISLAND;
 pub use body::{Body, BodyDef, BodyKind, MassSpec};

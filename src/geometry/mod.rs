@@ -19,8 +19,8 @@ mod contact_circle_circle;
 mod ray;
 mod ray_aabb;
 mod ray_circle;
+mod segment_cast;
 mod shapes;
-mod sweep;
 mod toi;
 
 pub use closest_point::{SegmentPoint, closest_point_on_segment};

@@ -4,7 +4,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::sweep::Cast;
+use super::segment_cast::Cast;
 use crate::Fx;
 use crate::math::{Scalar, Vec2, WideScalar};
 

@@ -31,7 +31,7 @@
 
 use super::Aabb;
 use super::ray::{Ray, RayHit, ray_hit_from_cast};
-use super::sweep::cast_box;
+use super::segment_cast::cast_box;
 use crate::math::Scalar;
 
 /// Casts a ray against a solid axis-aligned box: the first point within

@@ -15,13 +15,13 @@
 //! ulps), solves from a point near the foot of the perpendicular from the
 //! centre, and forms every square in the wide type, where `m·m` (up to 2³³
 //! within the world bounds) is exact. The derivation and the error analysis
-//! are next to the solver in `sweep.rs`.
+//! are next to the solver in `segment_cast.rs`.
 //!
 //! The accuracy is stated on [`ray_circle`].
 
 use super::Circle;
 use super::ray::{Ray, RayHit, ray_hit_from_cast};
-use super::sweep::{cast_circle, circle_roots};
+use super::segment_cast::{cast_circle, circle_roots};
 use crate::math::Scalar;
 
 /// Casts a ray against a solid circle: the first point within

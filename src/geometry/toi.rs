@@ -29,7 +29,7 @@
 //! The outcomes, the normal conventions and the accuracy are documented on
 //! [`Toi`].
 
-use super::sweep::{Cast, cast_box, cast_circle, cast_rounded_box};
+use super::segment_cast::{Cast, cast_box, cast_circle, cast_rounded_box};
 use super::{Aabb, Circle};
 use crate::Fx;
 use crate::math::{Scalar, Vec2};

@@ -21,11 +21,12 @@ use serde::de::{Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 
 use super::error::SnapshotError;
-use crate::collision::{CachedContact, StepScratch};
+use crate::collision::CachedContact;
 use crate::constraints::ConstraintSlot;
 use crate::dynamics::{Body, BodyKind};
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2};
+use crate::solver::StepContext;
 use crate::world::{Event, Slot, World, WorldSettings};
 
 /// Most body slots a snapshot may hold (2²¹, twice the largest scene).
@@ -385,6 +386,6 @@ pub(crate) fn decode<S: Scalar>(payload: &[u8]) -> Result<World<S>, SnapshotErro
         constraint_slots: p.constraint_slots,
         constraint_free_list: p.constraint_free_list,
         events: p.events,
-        scratch: StepScratch::default(),
+        scratch: StepContext::default(),
     })
 }

@@ -2,7 +2,7 @@
 
 mod bodies;
 mod command;
-mod commands_apply;
+mod command_apply;
 mod constraints_api;
 mod error;
 mod events;
@@ -25,10 +25,11 @@ pub use query_index::QueryIndex;
 pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
 
 use crate::Fx;
-use crate::collision::{CachedContact, StepScratch};
+use crate::collision::CachedContact;
 use crate::constraints::ConstraintSlot;
 use crate::dynamics::{Body, BodyId};
 use crate::math::Scalar;
+use crate::solver::StepContext;
 
 /// One slot of the body table: a generation counter and maybe a body.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -80,7 +81,7 @@ pub struct World<S: Scalar = Fx> {
     /// Working buffers reused every step (no allocation in steady state);
     /// derived data, not part of the state (never serialised).
     #[serde(skip)]
-    pub(crate) scratch: StepScratch<S>,
+    pub(crate) scratch: StepContext<S>,
 }
 
 impl<S: Scalar> World<S> {
@@ -117,7 +118,7 @@ impl<S: Scalar> World<S> {
             constraint_slots: Vec::new(),
             constraint_free_list: Vec::new(),
             events: Vec::new(),
-            scratch: StepScratch::default(),
+            scratch: StepContext::default(),
         }
     }
 

@@ -8,18 +8,18 @@
 use super::WorldSettings;
 use super::step_constraints::relinearise_rope_rows;
 use super::{Command, CommandOutcome, Event, World, WorldError};
-use crate::collision::StepScratch;
 use crate::collision::{
     CachedContact, Proxy, ProxyClass, circles_out_of_reach, contact_between, find_pairs, shape_toi,
 };
-use crate::constraints::rope_block::BlockScratch;
-use crate::constraints::rope_block::{solve_group_positions, solve_group_velocities};
-use crate::dynamics::contact_solver::{ContactConstraint, effective_mass, warm_start};
-use crate::dynamics::contact_solver::{solve_friction_row, solve_position_row, solve_velocity_row};
-use crate::dynamics::row_groups::RowGroups;
 use crate::dynamics::{BodyId, BodyKind, islands};
 use crate::geometry::{Shape, Toi};
 use crate::math::{Scalar, Vec2};
+use crate::solver::StepContext;
+use crate::solver::block_solve::BlockScratch;
+use crate::solver::block_solve::{solve_group_positions, solve_group_velocities};
+use crate::solver::row::{ContactConstraint, effective_mass, warm_start};
+use crate::solver::row::{solve_friction_row, solve_position_row, solve_velocity_row};
+use crate::solver::row_groups::RowGroups;
 
 impl<S: Scalar> World<S> {
     /// Advances the world by one tick (`settings.dt` seconds).
@@ -93,7 +93,7 @@ impl<S: Scalar> World<S> {
         warm_start(&scratch.rope_rows, &mut scratch.velocities);
         warm_start(&scratch.constraints, &mut scratch.velocities);
         for _ in 0..self.settings.velocity_iterations {
-            let StepScratch {
+            let StepContext {
                 rope_rows,
                 rope_groups,
                 constraints,
@@ -109,7 +109,7 @@ impl<S: Scalar> World<S> {
         let settings = &self.settings;
         let scratch = &mut self.scratch;
         for _ in 0..settings.position_iterations {
-            let StepScratch {
+            let StepContext {
                 rope_rows,
                 rope_groups,
                 rope_geometry,

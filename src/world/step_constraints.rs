@@ -8,8 +8,8 @@
 use super::World;
 use crate::constraints::spring::{spring_impulse, theta_for};
 use crate::constraints::{Anchor, Constraint};
-use crate::dynamics::contact_solver::{ContactConstraint, effective_mass};
 use crate::math::{Scalar, Vec2};
+use crate::solver::row::{ContactConstraint, effective_mass};
 
 /// Where an anchor is this substep, how it moves, and which solver slot
 /// carries its velocity.

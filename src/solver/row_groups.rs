@@ -2,10 +2,10 @@
 //! flat so that regrouping every substep reuses the same two buffers and
 //! allocates nothing once they have grown to the scene's size.
 
-use crate::constraints::rope_block::MAX_BLOCK;
-use crate::dynamics::contact_solver::ContactConstraint;
 use crate::dynamics::islands;
 use crate::math::Scalar;
+use crate::solver::block_solve::MAX_BLOCK;
+use crate::solver::row::ContactConstraint;
 
 /// Groups of row indices, each sorted ascending, in the order of their first
 /// row (deterministic). Group `g` is `rows[starts[g]..starts[g + 1]]`.

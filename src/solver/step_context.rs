@@ -1,16 +1,16 @@
-//! Working buffers of a step, reused from step to step so that a world in
+//! The step context: working buffers of a step, reused from step to step so that a world in
 //! steady state allocates nothing. Derived data: never part of the state.
 
-use super::broad_phase::{BroadPhase, Proxy};
-use super::contact_cache::CachedContact;
-use crate::constraints::rope_block::BlockScratch;
-use crate::dynamics::contact_solver::ContactConstraint;
-use crate::dynamics::row_groups::RowGroups;
+use crate::collision::CachedContact;
+use crate::collision::{BroadPhase, Proxy};
 use crate::math::{Scalar, Vec2};
+use crate::solver::block_solve::BlockScratch;
+use crate::solver::row::ContactConstraint;
+use crate::solver::row_groups::RowGroups;
 
-/// Per-step working memory.
+/// Per-step working memory (the step context).
 #[derive(Clone, Debug, Default)]
-pub(crate) struct StepScratch<S: Scalar> {
+pub(crate) struct StepContext<S: Scalar> {
     /// Swept bounding boxes of the bodies, in slot order.
     pub(crate) proxies: Vec<Proxy<S>>,
     /// The broad phase's buffers and its x order from the last call.

@@ -21,8 +21,8 @@
 //! Groups larger than [`MAX_BLOCK`] rows fall back to sequential impulses
 //! (cost O(r³) per solve would grow too fast).
 
-use crate::dynamics::contact_solver::ContactConstraint;
 use crate::math::{Scalar, Vec2};
+use crate::solver::row::ContactConstraint;
 
 /// Largest group solved directly.
 pub(crate) const MAX_BLOCK: usize = 64;
