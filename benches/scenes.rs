@@ -29,7 +29,7 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use clockwork2d::prelude::*;
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
 use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 
 /// Builds a built-in scene with the default scalar. The scene files are

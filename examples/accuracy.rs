@@ -52,7 +52,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use clockwork2d::prelude::*;
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
 use fixed::types::I48F16;
 use penetration::{Piece, PieceShape, max_penetration};
 use plotters::element::Circle as Dot;

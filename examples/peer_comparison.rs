@@ -71,7 +71,7 @@ mod penetration;
 use std::time::Instant;
 
 use clockwork2d::prelude::*;
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
 use cpu_time::thread_cpu_ns;
 use penetration::{Piece, PieceShape, max_penetration};
 use rapier2d::prelude as rp;

@@ -35,7 +35,7 @@ mod cpu_time;
 use std::time::Instant;
 
 use clockwork2d::World;
-use clockwork2d::scene::{Generator, Scene, SceneKind, SceneMaterial, SceneSettings, SceneShape};
+use clockwork2d_scene::{Generator, Scene, SceneKind, SceneMaterial, SceneSettings, SceneShape};
 use cpu_time::thread_cpu_ns;
 
 const TARGETS: [u32; 6] = [1_000, 2_000, 4_000, 8_000, 16_000, 32_000];

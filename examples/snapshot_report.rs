@@ -10,7 +10,7 @@ use std::time::{Duration, Instant};
 
 use clockwork2d::World;
 use clockwork2d::replay::Recorder;
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
 
 fn scene(name: &str, ticks: u64) -> World {
     let mut world: World = builtin(name)

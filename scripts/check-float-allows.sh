@@ -1,20 +1,24 @@
 #!/usr/bin/env bash
 # No float arithmetic on the simulation path (DESIGN.md, determinism rules).
 #
-# The compiler enforces it: src/lib.rs has #![deny(clippy::float_arithmetic)],
-# which covers every module of the library, and CI runs clippy with
-# -D warnings. This script checks that nobody switched the lint off:
+# The compiler enforces it: the library (src/lib.rs), the scene crate
+# (scene/src/lib.rs, which builds worlds) and the determinism suite
+# (determinism/src/lib.rs and its runner) have
+# #![deny(clippy::float_arithmetic)], which covers every module, and CI runs
+# clippy with -D warnings. This script checks that nobody switched the lint
+# off:
 #
-#   * src/lib.rs still denies clippy::float_arithmetic crate-wide;
+#   * those crate roots still deny clippy::float_arithmetic crate-wide;
 #   * Cargo.toml's lint table does not allow it;
 #   * an allow/expect/warn of clippy::float_arithmetic (or of the whole
 #     clippy::restriction group, or a cfg_attr that does either) appears in
-#     src/ only
+#     those crates only
 #       - in the reference f64/f32 scalar impls (ALLOWED below, with the
 #         most allows each file may hold), or
 #       - below a file's first #[cfg(test)] (unit tests computing reference
 #         values in f64), or
-#       - in src/bin/ (command-line edge code: reports, timings).
+#     (the CLI crate, cli/, is command-line edge code: reports, timings;
+#     it is not checked).
 #
 # Exit 0 when clean; 1 with one line per offending allow otherwise.
 set -euo pipefail
@@ -32,12 +36,17 @@ fail() {
   status=1
 }
 
-if ! grep -Eq '^#!\[deny\(clippy::float_arithmetic\)\]' src/lib.rs; then
-  fail "src/lib.rs must keep #![deny(clippy::float_arithmetic)] (crate-wide)"
-fi
-if grep -Eq 'float_arithmetic[[:space:]]*=[[:space:]]*("(allow|warn)"|\{[^}]*level[[:space:]]*=[[:space:]]*"(allow|warn)")' Cargo.toml; then
-  fail "Cargo.toml's [lints.clippy] must not allow or weaken float_arithmetic"
-fi
+ROOTS=(src/lib.rs scene/src/lib.rs determinism/src/lib.rs determinism/examples/determinism_suite.rs)
+for root in "${ROOTS[@]}"; do
+  if ! grep -Eq '^#!\[deny\(clippy::float_arithmetic\)\]' "$root"; then
+    fail "$root must keep #![deny(clippy::float_arithmetic)] (crate-wide)"
+  fi
+done
+for manifest in Cargo.toml scene/Cargo.toml determinism/Cargo.toml; do
+  if grep -Eq 'float_arithmetic[[:space:]]*=[[:space:]]*("(allow|warn)"|\{[^}]*level[[:space:]]*=[[:space:]]*"(allow|warn)")' "$manifest"; then
+    fail "$manifest's lint table must not allow or weaken float_arithmetic"
+  fi
+done
 
 pattern='(allow|expect|warn)[[:space:]]*\([^)]*clippy::(float_arithmetic|restriction)'
 
@@ -54,9 +63,6 @@ budget_for() {
 }
 
 while IFS= read -r file; do
-  case "$file" in
-    src/bin/*) continue ;;
-  esac
   # Allows above the first #[cfg(test)] line (non-test code), as "line:text".
   hits=$(awk -v pat="$pattern" '
     /^[[:space:]]*#\[cfg\(test\)\]/ { exit }
@@ -70,10 +76,10 @@ while IFS= read -r file; do
       fail "$file:${hit%%:*}: float arithmetic allowed outside the reference scalar impls and tests:${hit#*:}"
     done <<<"$hits"
   fi
-done < <(grep -rlE "$pattern" src --include='*.rs' || true)
+done < <(grep -rlE "$pattern" src scene/src determinism/src determinism/examples --include='*.rs' || true)
 
 if ((status == 0)); then
-  echo "check-float-allows: ok (clippy::float_arithmetic denied crate-wide; allowed only in the reference scalar impls, unit tests and src/bin)"
+  echo "check-float-allows: ok (clippy::float_arithmetic denied crate-wide; allowed only in the reference scalar impls and unit tests; cli/ is edge code)"
 else
   echo "check-float-allows: the simulation path must stay free of f32/f64 arithmetic (see DESIGN.md); convert at the edge with fx()/to_f64() instead" >&2
 fi

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Bit-identical on five architectures, in debug and release (issue 6).
 #
-# Builds the determinism suite (src/bin/determinism_suite.rs) once per
+# Builds the determinism suite's runner (the determinism/ crate's example
+# determinism_suite, determinism/examples/determinism_suite.rs) once per
 # target and profile and runs it; every run must reproduce every golden hash
-# of src/determinism/golden.rs:
+# of determinism/src/golden.rs:
 #
 #   x86_64-unknown-linux-gnu   natively, and again with -C target-cpu=native
 #   i686-unknown-linux-gnu     32-bit (natively through the cross ld.so when
@@ -91,16 +92,16 @@ install_tools() {
 binary() {
   local target=$1 profile=$2
   case $target in
-    native-cpu) echo "$NATIVE_CPU_DIR/$profile/determinism_suite" ;;
-    "$HOST") echo "$TARGET_DIR/$profile/determinism_suite" ;;
-    wasm32-wasip1) echo "$TARGET_DIR/$target/$profile/determinism_suite.wasm" ;;
-    *) echo "$TARGET_DIR/$target/$profile/determinism_suite" ;;
+    native-cpu) echo "$NATIVE_CPU_DIR/$profile/examples/determinism_suite" ;;
+    "$HOST") echo "$TARGET_DIR/$profile/examples/determinism_suite" ;;
+    wasm32-wasip1) echo "$TARGET_DIR/$target/$profile/examples/determinism_suite.wasm" ;;
+    *) echo "$TARGET_DIR/$target/$profile/examples/determinism_suite" ;;
   esac
 }
 
 build() {
   local target=$1 profile=$2
-  local args=(build --quiet --bin determinism_suite)
+  local args=(build --quiet -p clockwork2d-determinism --example determinism_suite)
   [[ $profile == release ]] && args+=(--release)
   log "build $target $profile"
   case $target in
@@ -109,10 +110,6 @@ build() {
         cargo "${args[@]}"
       ;;
     "$HOST") cargo "${args[@]}" ;;
-    # indicatif (the CLI's progress bar, a normal dependency of the crate)
-    # needs its wasmbind feature to compile for wasm32; on wasi it is std's
-    # clock.
-    wasm32-wasip1) cargo "${args[@]}" --target "$target" --features indicatif/wasmbind ;;
     *) cargo "${args[@]}" --target "$target" ;;
   esac
   [[ -f $(binary "$target" "$profile") ]] || die "build of $target $profile produced no binary"
@@ -206,7 +203,8 @@ echo "cross-determinism: took ${SECONDS}s"
 if ((bad > 0 || ${#FAILED_RUNS[@]} > 0)); then
   for f in "${FAILED_RUNS[@]}"; do echo "cross-determinism: failed run: $f" >&2; done
   echo "cross-determinism: MISMATCH. A golden hash that moves on one target or profile only is a" >&2
-  echo "determinism bug. For an intended behaviour change: cargo run --release --bin" >&2
-  echo "determinism_suite -- --update-golden, then name the change in CHANGELOG.md." >&2
+  echo "determinism bug. For an intended behaviour change: cargo run --release -p" >&2
+  echo "clockwork2d-determinism --example determinism_suite -- --update-golden, then name" >&2
+  echo "the change in CHANGELOG.md." >&2
   exit 1
 fi

@@ -17,14 +17,12 @@
 
 mod collision;
 pub mod constraints;
-pub mod determinism;
 pub mod diff;
 pub mod dynamics;
 pub mod geometry;
 pub mod hash;
 pub mod math;
 pub mod replay;
-pub mod scene;
 pub mod snapshot;
 mod solver;
 pub mod world;

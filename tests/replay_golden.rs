@@ -10,8 +10,9 @@
 use std::path::PathBuf;
 
 use clockwork2d::prelude::*;
-use clockwork2d::replay::{Recorder, Replay, scripted_commands};
-use clockwork2d::scene::builtin;
+use clockwork2d::replay::{Recorder, Replay};
+use clockwork2d_scene::builtin;
+use clockwork2d_scene::scripted_commands;
 
 /// The command that rewrites `tests/data/*.replay` and the constants below.
 const REGENERATE: &str =

@@ -2,9 +2,10 @@
 //! tick, both hashes and the parts that differ.
 
 use clockwork2d::prelude::*;
-use clockwork2d::replay::{Checkpoint, Recorder, Replay, scripted_commands};
-use clockwork2d::scene::builtin;
+use clockwork2d::replay::{Checkpoint, Recorder, Replay};
 use clockwork2d::snapshot::{FileKind, SnapshotError};
+use clockwork2d_scene::builtin;
+use clockwork2d_scene::scripted_commands;
 
 fn record(scene: &str, ticks: u64, k: u32, seed: u64) -> (Replay, World) {
     let world: World = builtin(scene).unwrap().build().unwrap();

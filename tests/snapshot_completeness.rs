@@ -5,8 +5,8 @@
 //! to the end of the run.
 
 use clockwork2d::prelude::*;
-use clockwork2d::replay::scripted_commands;
-use clockwork2d::scene::{BUILTIN_SCENES, Scene};
+use clockwork2d_scene::scripted_commands;
+use clockwork2d_scene::{BUILTIN_SCENES, Scene};
 
 /// What the snapshots of a run covered.
 #[derive(Default, Debug)]

@@ -4,8 +4,8 @@
 use clockwork2d::hash::StateHasher;
 use clockwork2d::prelude::*;
 use clockwork2d::replay::Recorder;
-use clockwork2d::scene::builtin;
 use clockwork2d::snapshot::{FileHeader, FileKind, PAYLOAD_LIMIT, SnapshotError};
+use clockwork2d_scene::builtin;
 
 fn stack_at(ticks: u64) -> World {
     let mut w: World = builtin("stack").unwrap().build().unwrap();

@@ -5,8 +5,8 @@
 
 use clockwork2d::hash::StateHasher;
 use clockwork2d::prelude::*;
-use clockwork2d::replay::scripted_commands;
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
+use clockwork2d_scene::scripted_commands;
 use proptest::prelude::*;
 
 fn fix_checksum(bytes: &mut [u8]) {

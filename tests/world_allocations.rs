@@ -11,7 +11,7 @@
 //! contact events.
 
 use clockwork2d::prelude::*;
-use clockwork2d::scene::{BUILTIN_SCENES, builtin};
+use clockwork2d_scene::{BUILTIN_SCENES, builtin};
 
 /// Ticks before measuring: long enough for every scene's contact count to
 /// reach its peak (piles have landed, stacks have settled or slept).

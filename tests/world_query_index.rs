@@ -25,7 +25,7 @@
 //!   `raycast_all`, and 2000 rays into the 5050-box pyramid of the bench.
 
 use clockwork2d::prelude::*;
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
 use fixed::types::I48F16;
 use proptest::prelude::*;
 

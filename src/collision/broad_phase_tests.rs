@@ -443,11 +443,50 @@ fn nothing_to_pair_when_nothing_moves() {
 
 #[test]
 fn scene_proxies_match_the_original() {
-    // Real proxies (a falling pile of circles), called on the step's own
+    // Real proxies (a falling pile of circles with scattered velocities in
+    // a closed box, like the `balls5000` scene), called on the step's own
     // broad phase, whose x order has been kept over the ticks.
-    let mut world: crate::World<Fx> = crate::scene::builtin("balls5000")
-        .and_then(|scene| scene.build())
-        .unwrap_or_else(|e| panic!("{e}"));
+    use crate::dynamics::BodyDef;
+    use crate::geometry::Shape;
+    use crate::math::Vec2;
+    let v = |x: f64, y: f64| Vec2::new(crate::fx(x), crate::fx(y));
+    let mut world: crate::World<Fx> = crate::World::new(crate::WorldSettings::default());
+    for (centre, half) in [
+        (v(0.0, -0.5), v(41.0, 1.0)),
+        (v(0.0, 40.5), v(41.0, 1.0)),
+        (v(-40.5, 20.0), v(1.0, 21.0)),
+        (v(40.5, 20.0), v(1.0, 21.0)),
+    ] {
+        world
+            .add_body(BodyDef::fixed(Shape::aabb(half)).position(centre))
+            .unwrap_or_else(|e| panic!("{e}"));
+    }
+    let mut state = 5000_u64;
+    let mut speed = || {
+        // SplitMix64 step, mapped to -5..5 in steps of 1/64.
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        let steps = i32::try_from((z ^ (z >> 31)) % 641).unwrap_or(0) - 320;
+        Fx::from_num(steps) / 64
+    };
+    for row in 0..50_u8 {
+        for column in 0..100_u8 {
+            let position = v(
+                -37.125 + 0.75 * f64::from(column),
+                0.5 + 0.75 * f64::from(row),
+            );
+            let velocity = Vec2::new(speed(), speed());
+            world
+                .add_body(
+                    BodyDef::dynamic(Shape::circle(crate::fx(0.25)))
+                        .position(position)
+                        .velocity(velocity),
+                )
+                .unwrap_or_else(|e| panic!("{e}"));
+        }
+    }
     for _ in 0..40 {
         world.step();
     }

@@ -48,9 +48,7 @@
 //! too. A [`Recorder`] that goes past these limits produces a replay that
 //! [`Replay::from_bytes`] refuses.
 
-mod inputs;
 mod recorder;
-mod script;
 mod verify;
 
 use std::marker::PhantomData;
@@ -58,9 +56,7 @@ use std::marker::PhantomData;
 use serde::de::{Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 
-pub use inputs::{InputCommand, InputError, TickInputs, parse_inputs};
 pub use recorder::Recorder;
-pub use script::scripted_commands;
 pub use verify::{Divergence, VerifyReport};
 
 use crate::Fx;

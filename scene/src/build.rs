@@ -8,11 +8,11 @@ use super::{
     Generator, MAX_SCENE_BODIES, Scene, SceneAnchor, SceneBody, SceneConstraint, SceneError,
     SceneKind, SceneMaterial, SceneShape,
 };
-use crate::constraints::{Anchor, Constraint};
-use crate::dynamics::{BodyDef, BodyId};
-use crate::geometry::Shape;
-use crate::math::{Scalar, Vec2};
-use crate::world::{World, WorldSettings};
+use clockwork2d::constraints::{Anchor, Constraint};
+use clockwork2d::dynamics::{BodyDef, BodyId};
+use clockwork2d::geometry::Shape;
+use clockwork2d::math::{Scalar, Vec2};
+use clockwork2d::world::{World, WorldSettings};
 
 /// Converts a literal, refusing NaN and infinities.
 fn num<S: Scalar>(value: f64, what: &dyn Fn() -> String) -> Result<S, SceneError> {

@@ -1,7 +1,7 @@
 //! [`Probe`]: folds what a scenario observes besides the state (ray-cast
 //! answers, query results, command outcomes, events) into one running
 //! FNV-1a-64 digest, with the same canonical little-endian encoding as the
-//! state hash ([`crate::hash`]).
+//! state hash ([`clockwork2d::hash`]).
 //!
 //! The probe digest at a checkpoint covers everything observed since the
 //! start of the run, so a query answer that differs at any tick changes
@@ -21,11 +21,11 @@
 //! | 6 | events: count (u32), then per event a code (u8: 1 contact ended, 2 began, 3 slept, 4 woke, 5 frozen) and its ids |
 //! | 7 | a scalar observation (scalar bits) |
 
-use crate::constraints::ConstraintId;
-use crate::dynamics::BodyId;
-use crate::hash::StateHasher;
-use crate::math::{Fx, Vec2};
-use crate::world::{BodyRayHit, CommandOutcome, Event, WorldError};
+use clockwork2d::constraints::ConstraintId;
+use clockwork2d::dynamics::BodyId;
+use clockwork2d::hash::StateHasher;
+use clockwork2d::math::{Fx, Vec2};
+use clockwork2d::world::{BodyRayHit, CommandOutcome, Event, WorldError};
 
 /// A running digest of a scenario's observations.
 #[derive(Clone, Copy, Debug, Default)]

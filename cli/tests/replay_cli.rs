@@ -7,7 +7,7 @@ use std::process::{Command as Process, Output};
 
 use clockwork2d::prelude::*;
 use clockwork2d::replay::{Recorder, Replay};
-use clockwork2d::scene::builtin;
+use clockwork2d_scene::builtin;
 
 fn cli(args: &[&str]) -> Output {
     Process::new(env!("CARGO_BIN_EXE_clockwork2d"))

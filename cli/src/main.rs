@@ -19,6 +19,8 @@
 //!   (exit 0 identical, 1 different, 2 unreadable).
 #![forbid(unsafe_code)]
 
+mod inputs;
+
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -27,14 +29,15 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand};
 use clockwork2d::diff::diff_worlds;
 use clockwork2d::dynamics::BodyKind;
-use clockwork2d::replay::{
-    MAX_CHECKPOINTS, MAX_REPLAY_TICKS, Recorder, Replay, parse_inputs, scripted_commands,
-};
-use clockwork2d::scene::{BUILTIN_SCENES, DEFAULT_SCENE, Scene, SceneError, builtin};
+use clockwork2d::replay::{MAX_CHECKPOINTS, MAX_REPLAY_TICKS, Recorder, Replay};
 use clockwork2d::snapshot::{FileHeader, FileKind, SnapshotError};
 use clockwork2d::{Command, Fx, Scalar, World};
+use clockwork2d_scene::{
+    BUILTIN_SCENES, DEFAULT_SCENE, Scene, SceneError, builtin, scripted_commands,
+};
 use fixed::types::I48F16;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use inputs::parse_inputs;
 
 #[derive(Parser)]
 #[command(

@@ -6,7 +6,7 @@
 //! Each [`Scenario`] builds a world (from a built-in scene or from code),
 //! then plays a script for [`TICKS`] ticks: commands applied mid-run, ray
 //! casts and queries. Every [`CHECKPOINT_EVERY`] ticks (and at tick 0) it
-//! records a [`Checkpoint`]: the world's [`state_hash`](crate::World::state_hash)
+//! records a [`Checkpoint`]: the world's [`state_hash`](clockwork2d::World::state_hash)
 //! and the digest of a [`Probe`] that folds everything observed besides the
 //! state (ray-cast answers with their distance, point and normal bits,
 //! query results, every command's outcome or refusal, every event).
@@ -19,7 +19,7 @@
 //! saturation policy, `max_speed` clamping, freezing at the bounds).
 //!
 //! ```
-//! use clockwork2d::determinism::{SCENARIOS, check_golden};
+//! use clockwork2d_determinism::{SCENARIOS, check_golden};
 //! let scenario = SCENARIOS.iter().find(|s| s.name == "stack_sleep").unwrap();
 //! let run = scenario.run().unwrap();
 //! assert_eq!(run.checkpoints.len(), 11); // ticks 0, 60, ..., 600
@@ -29,14 +29,17 @@
 //! # Updating the goldens
 //!
 //! A change that moves a golden hash is a behaviour change. After making
-//! it on purpose, regenerate `src/determinism/golden.rs` with
+//! it on purpose, regenerate `determinism/src/golden.rs` with
 //!
 //! ```text
-//! cargo run --release --bin determinism_suite -- --update-golden
+//! cargo run --release -p clockwork2d-determinism --example determinism_suite -- --update-golden
 //! ```
 //!
 //! and name the change in CHANGELOG.md. A mismatch on one target only is
 //! never a reason to regenerate: it is a determinism bug.
+
+#![forbid(unsafe_code)]
+#![deny(clippy::float_arithmetic)]
 
 mod golden;
 mod probe;
@@ -49,9 +52,9 @@ use std::fmt::Write as _;
 pub use golden::GOLDEN;
 pub use probe::{Probe, error_code, error_name};
 
-use crate::replay::{Recorder, Replay};
-use crate::snapshot::SnapshotError;
-use crate::world::{Command, CommandOutcome, Event, World, WorldError};
+use clockwork2d::replay::{Recorder, Replay};
+use clockwork2d::snapshot::SnapshotError;
+use clockwork2d::world::{Command, CommandOutcome, Event, World, WorldError};
 
 /// Ticks every scenario runs.
 pub const TICKS: u64 = 600;
@@ -61,7 +64,8 @@ pub const CHECKPOINT_EVERY: u64 = 60;
 pub const SNAPSHOT_TICK: u64 = 300;
 /// The command that regenerates the goldens (quoted in every mismatch
 /// message).
-pub const UPDATE_COMMAND: &str = "cargo run --release --bin determinism_suite -- --update-golden";
+pub const UPDATE_COMMAND: &str =
+    "cargo run --release -p clockwork2d-determinism --example determinism_suite -- --update-golden";
 
 /// Why a scenario could not be built or played.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -81,8 +85,8 @@ impl From<WorldError> for SuiteError {
     }
 }
 
-impl From<crate::scene::SceneError> for SuiteError {
-    fn from(e: crate::scene::SceneError) -> Self {
+impl From<clockwork2d_scene::SceneError> for SuiteError {
+    fn from(e: clockwork2d_scene::SceneError) -> Self {
         SuiteError(format!("scene error while building a scenario: {e}"))
     }
 }
@@ -178,7 +182,7 @@ pub(crate) struct Observer<'a> {
 
 impl Observer<'_> {
     /// Folds a ray answer and counts it.
-    pub(crate) fn ray(&mut self, hit: Option<&crate::world::BodyRayHit<crate::Fx>>) {
+    pub(crate) fn ray(&mut self, hit: Option<&clockwork2d::world::BodyRayHit<clockwork2d::Fx>>) {
         if hit.is_some() {
             self.coverage.ray_hits += 1;
         } else {
@@ -444,8 +448,8 @@ impl fmt::Display for Mismatch {
 pub const MISMATCH_ADVICE: &str = "\
 A golden hash moved. If it moved on one target or profile only, that is a \
 determinism bug: do not update the goldens. If the behaviour change is \
-intended, regenerate src/determinism/golden.rs with
-    cargo run --release --bin determinism_suite -- --update-golden
+intended, regenerate determinism/src/golden.rs with
+    cargo run --release -p clockwork2d-determinism --example determinism_suite -- --update-golden
 then rerun scripts/cross-determinism.sh, and name the behaviour change in \
 CHANGELOG.md (every change that moves a golden hash is listed there).";
 
@@ -491,7 +495,7 @@ fn check_checkpoints(
     Ok(())
 }
 
-/// The Rust source of `src/determinism/golden.rs` for these runs
+/// The Rust source of `determinism/src/golden.rs` for these runs
 /// (rustfmt-clean).
 #[must_use]
 pub fn golden_source(runs: &[ScenarioRun]) -> String {
@@ -500,7 +504,7 @@ pub fn golden_source(runs: &[ScenarioRun]) -> String {
         "//! Golden checkpoints of the determinism suite. Generated: do not edit by hand.\n\
          //!\n\
          //! Regenerate with\n\
-         //! `cargo run --release --bin determinism_suite -- --update-golden`\n\
+         //! `cargo run --release -p clockwork2d-determinism --example determinism_suite -- --update-golden`\n\
          //! and name the behaviour change in CHANGELOG.md.\n\
          \n\
          use super::GoldenScenario;\n\
@@ -579,7 +583,7 @@ pub fn verify_files(
             "the replay's recorded hashes differ from the goldens (recorded {recorded:x?}, golden {expected:x?})"
         ));
     }
-    let mut world = match World::<crate::Fx>::restore(snapshot_bytes) {
+    let mut world = match World::<clockwork2d::Fx>::restore(snapshot_bytes) {
         Ok(w) => w,
         Err(e) => return fail(format!("snapshot refused: {e}")),
     };

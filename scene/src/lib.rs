@@ -1,5 +1,12 @@
-//! Scenes: a RON description of settings and bodies, with generators for
-//! the usual arrangements (stacks, pyramids, grids, walls).
+//! Scenes for clockwork2d: a RON description of settings and bodies, with
+//! generators for the usual arrangements (stacks, pyramids, grids, walls),
+//! the built-in scenes, building a [`World`](clockwork2d::World) from a
+//! scene, and the seeded scripted input ([`scripted_commands`]) that the
+//! golden replays and the determinism suite are made of.
+//!
+//! This crate holds the text format (RON) so that the library itself
+//! depends on `fixed`, `serde` and `bincode` only; the CLI, the determinism
+//! suite, the tests, fuzzing and the web playground use it.
 //!
 //! Numbers in scene files are decimal literals; they are converted once,
 //! at load time, with the scalar's correctly rounded conversion, so a scene
@@ -7,7 +14,7 @@
 //!
 //! ```
 //! use clockwork2d::prelude::*;
-//! use clockwork2d::scene::Scene;
+//! use clockwork2d_scene::Scene;
 //! let scene = Scene::from_ron(r#"(
 //!     name: "drop",
 //!     bodies: [
@@ -19,14 +26,19 @@
 //! assert_eq!(world.body_count(), 2);
 //! ```
 
+#![forbid(unsafe_code)]
+#![deny(clippy::float_arithmetic)]
+
 mod build;
 mod builtin;
 mod error;
+mod script;
 
 use serde::{Deserialize, Serialize};
 
 pub use builtin::{BUILTIN_SCENES, DEFAULT_SCENE, builtin};
 pub use error::SceneError;
+pub use script::scripted_commands;
 
 /// Largest number of bodies a scene may create (bounds memory for
 /// untrusted scene files).
@@ -37,7 +49,7 @@ pub const MAX_SCENE_BODIES: u64 = 1 << 20;
 pub struct Scene {
     /// A short name.
     pub name: String,
-    /// Overrides of the default [`WorldSettings`](crate::WorldSettings).
+    /// Overrides of the default [`WorldSettings`](clockwork2d::WorldSettings).
     #[serde(default)]
     pub settings: SceneSettings,
     /// Individual bodies.
@@ -63,7 +75,7 @@ pub enum SceneAnchor {
     BodyOffset(u32, (f64, f64)),
 }
 
-/// A constraint in a scene file (see [`crate::Constraint`]).
+/// A constraint in a scene file (see [`clockwork2d::Constraint`]).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum SceneConstraint {
     /// A bendy spring pulling `b` toward `a + rest_offset`.

@@ -9,7 +9,7 @@
 
 use std::sync::OnceLock;
 
-use clockwork2d::determinism::{
+use clockwork2d_determinism::{
     MISMATCH_ADVICE, SCENARIOS, ScenarioRun, TICKS, check_golden, golden, golden_source,
     verify_files,
 };
@@ -65,7 +65,7 @@ fn the_golden_file_is_what_print_golden_prints() {
     // The goldens are exactly the generated source: regenerating with no
     // behaviour change is a no-op (so a hand edit is caught here).
     let source = golden_source(runs());
-    let committed = include_str!("../src/determinism/golden.rs");
+    let committed = include_str!("../src/golden.rs");
     if check_golden_all() {
         assert_eq!(source, committed);
     }

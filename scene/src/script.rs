@@ -1,10 +1,10 @@
 //! A seeded, scripted input: the commands `clockwork2d record` uses when no
 //! input file is given, and what the golden replays are made of.
 
-use crate::dynamics::{BodyDef, BodyId, BodyKind};
-use crate::geometry::Shape;
-use crate::math::{Scalar, Vec2};
-use crate::world::{Command, World};
+use clockwork2d::dynamics::{BodyDef, BodyId, BodyKind};
+use clockwork2d::geometry::Shape;
+use clockwork2d::math::{Scalar, Vec2};
+use clockwork2d::world::{Command, World};
 
 /// SplitMix64 (integer only, the same everywhere).
 fn splitmix(state: &mut u64) -> u64 {
@@ -47,8 +47,8 @@ fn pick<T: Copy>(state: &mut u64, items: &[T]) -> Option<T> {
 ///
 /// ```
 /// use clockwork2d::prelude::*;
-/// use clockwork2d::replay::scripted_commands;
-/// let mut world: World = clockwork2d::scene::builtin("stack").unwrap().build().unwrap();
+/// use clockwork2d_scene::scripted_commands;
+/// let mut world: World = clockwork2d_scene::builtin("stack").unwrap().build().unwrap();
 /// for _ in 0..200 {
 ///     let commands = scripted_commands(&world, 7);
 ///     world.step_with(&commands);

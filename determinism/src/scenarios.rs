@@ -7,13 +7,13 @@
 //! converts with correct rounding.
 
 use super::{Built, Observer, Script};
-use crate::constraints::{Anchor, Constraint, ConstraintId};
-use crate::dynamics::{BodyDef, BodyId, BodyKind};
-use crate::geometry::{Aabb, Shape};
-use crate::math::{Fx, Scalar, Vec2};
-use crate::replay::scripted_commands;
-use crate::scene::builtin;
-use crate::world::{Command, CommandOutcome, QueryFilter, World, WorldError, WorldSettings};
+use clockwork2d::constraints::{Anchor, Constraint, ConstraintId};
+use clockwork2d::dynamics::{BodyDef, BodyId, BodyKind};
+use clockwork2d::geometry::{Aabb, Shape};
+use clockwork2d::math::{Fx, Scalar, Vec2};
+use clockwork2d::world::{Command, CommandOutcome, QueryFilter, World, WorldError, WorldSettings};
+use clockwork2d_scene::builtin;
+use clockwork2d_scene::scripted_commands;
 
 /// An integer as a scalar.
 fn n(value: i32) -> Fx {

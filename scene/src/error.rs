@@ -2,7 +2,7 @@
 
 use core::fmt;
 
-use crate::world::WorldError;
+use clockwork2d::world::WorldError;
 
 /// Why a scene could not be loaded or built.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,27 +2,23 @@
 //! `(tick, [commands])` with decimal numbers, converted once to the scalar
 //! (like scene files).
 //!
-//! ```
-//! use clockwork2d::prelude::*;
-//! use clockwork2d::replay::parse_inputs;
-//! let inputs = parse_inputs::<Fx>(r#"[
+//! ```text
+//! [
 //!     (0, [Spawn((kind: Dynamic, shape: Circle(radius: 0.5), position: (0.0, 8.0)))]),
 //!     (30, [Impulse(body: (1, 0), impulse: (2.0, 0.0)), Wake((0, 0))]),
 //!     (60, [Velocity(body: (1, 0), velocity: (0.0, 3.0)), Despawn((1, 0))]),
-//! ]"#).unwrap();
-//! assert_eq!(inputs.len(), 3);
-//! assert_eq!(inputs[1].1.len(), 2);
+//! ]
 //! ```
 
 use core::fmt;
 
 use serde::{Deserialize, Serialize};
 
-use crate::dynamics::{BodyDef, BodyId};
-use crate::geometry::Shape;
-use crate::math::{Scalar, Vec2};
-use crate::scene::{SceneBody, SceneKind, SceneShape};
-use crate::world::Command;
+use clockwork2d::dynamics::{BodyDef, BodyId};
+use clockwork2d::geometry::Shape;
+use clockwork2d::math::{Scalar, Vec2};
+use clockwork2d::world::Command;
+use clockwork2d_scene::{SceneBody, SceneKind, SceneShape};
 
 /// Most entries an input file may have (bounds memory for untrusted files).
 const MAX_INPUT_COMMANDS: usize = 1 << 20;
@@ -178,4 +174,26 @@ pub fn parse_inputs<S: Scalar>(text: &str) -> Result<TickInputs<S>, InputError> 
     }
     out.sort_by_key(|(tick, _)| *tick);
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use clockwork2d::Fx;
+
+    use super::parse_inputs;
+
+    #[test]
+    fn the_module_example_parses() {
+        let inputs = parse_inputs::<Fx>(
+            r#"[
+            (0, [Spawn((kind: Dynamic, shape: Circle(radius: 0.5), position: (0.0, 8.0)))]),
+            (30, [Impulse(body: (1, 0), impulse: (2.0, 0.0)), Wake((0, 0))]),
+            (60, [Velocity(body: (1, 0), velocity: (0.0, 3.0)), Despawn((1, 0))]),
+        ]"#,
+        )
+        .unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(inputs.len(), 3);
+        assert_eq!(inputs[1].0, 30);
+        assert_eq!(inputs[1].1.len(), 2);
+    }
 }

@@ -1,7 +1,7 @@
 //! Golden checkpoints of the determinism suite. Generated: do not edit by hand.
 //!
 //! Regenerate with
-//! `cargo run --release --bin determinism_suite -- --update-golden`
+//! `cargo run --release -p clockwork2d-determinism --example determinism_suite -- --update-golden`
 //! and name the behaviour change in CHANGELOG.md.
 
 use super::GoldenScenario;

@@ -20,7 +20,7 @@
 //!   hashes are the goldens, the snapshot restores and continues to the
 //!   golden hashes, and both files are byte for byte the ones this target
 //!   writes.
-//! * `--print-golden`: prints the Rust source of `src/determinism/golden.rs`
+//! * `--print-golden`: prints the Rust source of `determinism/src/golden.rs`
 //!   for the current behaviour; `--update-golden` writes it there.
 //!
 //! It uses only the crate's normal dependencies, so it builds for every
@@ -33,14 +33,14 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 
-use clockwork2d::determinism::{
+use clockwork2d_determinism::{
     CHECKPOINT_EVERY, MISMATCH_ADVICE, SCENARIOS, Scenario, ScenarioRun, TICKS, UPDATE_COMMAND,
     check_golden, golden_source, verify_files,
 };
 
 /// Where `--update-golden` writes (the source tree this binary was built
 /// from).
-const GOLDEN_PATH: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/determinism/golden.rs");
+const GOLDEN_PATH: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/src/golden.rs");
 /// The file in a `--write` directory naming the writer.
 const WRITER_FILE: &str = "WRITER";
 
