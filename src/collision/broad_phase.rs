@@ -48,7 +48,6 @@
 
 use super::pair_sort::sort_keys;
 use crate::math::Scalar;
-use crate::solver::StepContext;
 
 /// How a proxy takes part in pairing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -183,19 +182,6 @@ pub(crate) struct BroadPhase {
     keys_scratch: Vec<u64>,
     /// Digit histograms of the radix sort.
     histogram: Vec<u32>,
-}
-
-/// Writes the overlapping pairs of `scratch.proxies` into `scratch.pairs`
-/// (see [`BroadPhase::find_pairs`]), with `scratch.broad_phase` as working
-/// memory.
-pub(crate) fn find_pairs<S: Scalar>(scratch: &mut StepContext<S>) {
-    let StepContext {
-        proxies,
-        broad_phase,
-        pairs,
-        ..
-    } = scratch;
-    broad_phase.find_pairs(proxies, pairs);
 }
 
 impl BroadPhase {

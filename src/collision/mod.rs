@@ -5,6 +5,6 @@ mod contact_cache;
 mod narrow_phase;
 mod pair_sort;
 
-pub(crate) use broad_phase::{BroadPhase, Proxy, ProxyClass, find_pairs};
+pub(crate) use broad_phase::{BroadPhase, Proxy, ProxyClass};
 pub(crate) use contact_cache::CachedContact;
-pub(crate) use narrow_phase::{circles_out_of_reach, contact_between, shape_toi};
+pub(crate) use narrow_phase::{NarrowPhase, shape_toi};

@@ -1,10 +1,15 @@
-//! Narrow phase: one function per shape pair, chosen by the shapes.
+//! Narrow phase: candidate pairs → contact rows ([`NarrowPhase`]), with one
+//! function per shape pair, chosen by the shapes.
 
 use crate::geometry::{
     Aabb, Circle, Contact, Shape, Toi, contact_aabb_aabb, contact_aabb_circle, contact_circle_aabb,
     contact_circle_circle, toi_aabb_aabb, toi_circle_aabb, toi_circle_circle,
 };
 use crate::math::{Scalar, Vec2};
+
+use super::CachedContact;
+use crate::dynamics::{Body, BodyKind};
+use crate::solver::row::{ContactConstraint, effective_mass};
 
 /// The contact between shape `a` at `pa` and shape `b` at `pb` (normal from
 /// a to b).
@@ -100,6 +105,156 @@ pub(crate) fn circles_out_of_reach<S: Scalar>(
     let reach_256th = (0..8).fold(reach, |r, _| r.half());
     let bound = reach.add(reach_256th).add(S::EPSILON.mul_int(16));
     offset.length_squared_wide() > bound.wide_mul(bound)
+}
+
+/// The narrow phase of one substep: the candidate pairs of the broad phase
+/// become contact rows for the solver, warm-started from the contact cache.
+/// Holds everything it reads besides the bodies.
+pub(crate) struct NarrowPhase<'a, S: Scalar> {
+    /// Candidate pairs, sorted by `(a, b)`.
+    pub(crate) pairs: &'a [(u32, u32)],
+    /// Velocity of each slot (gravity and springs applied).
+    pub(crate) velocities: &'a [Vec2<S>],
+    /// Inverse mass of each slot as the solver sees it.
+    pub(crate) inverse_masses: &'a [S],
+    /// Last substep's contacts, sorted by `(a, b)`: the warm-start impulses.
+    pub(crate) cache: &'a [CachedContact<S>],
+    /// Gap within which a pair gets a (speculative) row.
+    pub(crate) speculative_margin: S,
+    /// Predicted gap at or below which a sleeping body is woken.
+    pub(crate) linear_slop: S,
+    /// Approach speed above which restitution applies.
+    pub(crate) restitution_threshold: S,
+    /// The substep `h`.
+    pub(crate) h: S,
+    /// `1/h`.
+    pub(crate) inverse_h: S,
+}
+
+impl<S: Scalar> NarrowPhase<'_, S> {
+    /// Writes one contact row per pair that is or may come into contact
+    /// within the substep into `rows` (cleared first), merge-joining the
+    /// cache for warm starting (both lists are sorted by pair). `body(i)`
+    /// is the body of slot `i`.
+    ///
+    /// Returns the sleeping bodies an awake body touches (sorted, without
+    /// repeats), to be woken; when it is not empty the rows are incomplete
+    /// and the caller redoes the phase after waking them.
+    pub(crate) fn contact_rows<'b>(
+        &self,
+        body: impl Fn(u32) -> Option<&'b Body<S>>,
+        rows: &mut Vec<ContactConstraint<S>>,
+    ) -> Vec<u32>
+    where
+        S: 'b,
+    {
+        let NarrowPhase {
+            pairs,
+            velocities,
+            inverse_masses,
+            cache,
+            speculative_margin,
+            linear_slop,
+            restitution_threshold,
+            h,
+            inverse_h,
+        } = *self;
+        rows.clear();
+        let mut to_wake = Vec::new();
+        let mut cache = cache.iter().peekable();
+        // The last inverse-mass sum and its reciprocal: piles of equal
+        // masses need one division, not one per pair (same value).
+        let mut last_mass = (S::ZERO, S::ZERO);
+        for &(a, b) in pairs {
+            let (Some(body_a), Some(body_b)) = (body(a), body(b)) else {
+                continue;
+            };
+            // Most broad-phase pairs of a ball pit are diagonal neighbours
+            // out of reach: reject them before the square root.
+            if let (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) =
+                (body_a.shape, body_b.shape)
+                && circles_out_of_reach(
+                    ra.add(rb),
+                    body_b.position - body_a.position,
+                    velocities[b as usize] - velocities[a as usize],
+                    speculative_margin,
+                    h,
+                )
+            {
+                continue;
+            }
+            let contact = contact_between(
+                &body_a.shape,
+                body_a.position,
+                &body_b.shape,
+                body_b.position,
+            );
+            let (va, vb) = (velocities[a as usize], velocities[b as usize]);
+            let vn = (vb - va).dot(contact.normal);
+            // Keep the contact if the gap can close within this substep
+            // (plus the margin): s ≤ margin + max(0, -v_n)·h.
+            let reach = speculative_margin.add(vn.neg().max(S::ZERO).mul(h));
+            if contact.separation > reach {
+                continue;
+            }
+            let asleep_a = body_a.kind == BodyKind::Dynamic && !body_a.awake;
+            let asleep_b = body_b.kind == BodyKind::Dynamic && !body_b.awake;
+            // Wake a sleeper only if the pair touches or will touch within
+            // this substep at the current approach speed: a resting awake
+            // body a hair away from a sleeping pile must not wake it.
+            let predicted = contact.separation.add(vn.min(S::ZERO).mul(h));
+            if (asleep_a || asleep_b) && predicted <= linear_slop {
+                if asleep_a {
+                    to_wake.push(a);
+                }
+                if asleep_b {
+                    to_wake.push(b);
+                }
+            }
+            if !to_wake.is_empty() {
+                continue;
+            }
+            let (wa, wb) = (inverse_masses[a as usize], inverse_masses[b as usize]);
+            let sum = wa.add(wb);
+            if !sum.is_positive() {
+                continue;
+            }
+            // Skip cache entries of pairs that are gone, pick this pair's.
+            while cache.peek().is_some_and(|c| (c.a, c.b) < (a, b)) {
+                cache.next();
+            }
+            let (normal_impulse, tangent_impulse) = match cache.peek() {
+                Some(c) if (c.a, c.b) == (a, b) => (c.normal_impulse, c.tangent_impulse),
+                _ => (S::ZERO, S::ZERO),
+            };
+            // Geometric mean of the frictions (exact, and sqrt-free, when
+            // they are equal, which is the common case).
+            let friction = if body_a.friction == body_b.friction {
+                body_a.friction
+            } else {
+                body_a.friction.mul(body_b.friction).sqrt()
+            };
+            let restitution = body_a.restitution.max(body_b.restitution);
+            if sum != last_mass.0 {
+                last_mass = (sum, effective_mass(wa, wb));
+            }
+            let mut constraint = ContactConstraint::new(
+                a,
+                b,
+                contact.normal,
+                contact.separation,
+                (wa, wb),
+                last_mass.1,
+                friction,
+                (normal_impulse, tangent_impulse),
+            );
+            constraint.prepare_target(vn, restitution, restitution_threshold, h, inverse_h);
+            rows.push(constraint);
+        }
+        to_wake.sort_unstable();
+        to_wake.dedup();
+        to_wake
+    }
 }
 
 #[cfg(test)]

@@ -8,16 +8,14 @@
 use super::WorldSettings;
 use super::step_constraints::relinearise_rope_rows;
 use super::{Command, CommandOutcome, Event, World, WorldError};
-use crate::collision::{
-    CachedContact, Proxy, ProxyClass, circles_out_of_reach, contact_between, find_pairs, shape_toi,
-};
+use crate::collision::{CachedContact, NarrowPhase, Proxy, ProxyClass, shape_toi};
 use crate::dynamics::{BodyId, BodyKind, islands};
-use crate::geometry::{Shape, Toi};
+use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
 use crate::solver::block_solve::BlockScratch;
 use crate::solver::block_solve::{solve_group_positions, solve_group_velocities};
-use crate::solver::row::{ContactConstraint, effective_mass, warm_start};
+use crate::solver::row::{ContactConstraint, warm_start};
 use crate::solver::row::{solve_friction_row, solve_position_row, solve_velocity_row};
 use crate::solver::row_groups::RowGroups;
 
@@ -70,7 +68,8 @@ impl<S: Scalar> World<S> {
             self.load_scratch(h);
             self.apply_springs(h);
             self.build_proxies(h);
-            find_pairs(&mut self.scratch);
+            let scratch = &mut self.scratch;
+            scratch.broad_phase.find_pairs(&scratch.proxies, &mut scratch.pairs);
             let to_wake = self.build_constraints(h, inverse_h);
             if to_wake.is_empty() {
                 break;
@@ -199,125 +198,30 @@ impl<S: Scalar> World<S> {
         }
     }
 
-    /// Narrow phase over the sorted pairs, warm-started from the cache by a
-    /// merge join (both lists are sorted by pair). Returns the sleeping
-    /// bodies an awake body touches (to be woken); when it is not empty the
-    /// constraints are incomplete and the caller redoes the phase.
+    /// The narrow phase ([`NarrowPhase`]) into `scratch.constraints`;
+    /// returns the sleeping bodies to wake (then the caller redoes it).
     fn build_constraints(&mut self, h: S, inverse_h: S) -> Vec<u32> {
         let settings = &self.settings;
-        let scratch = &mut self.scratch;
-        scratch.constraints.clear();
-        let mut to_wake = Vec::new();
-        let mut cache = self.contacts.iter().peekable();
-        // The last inverse-mass sum and its reciprocal: piles of equal
-        // masses need one division, not one per pair (same value).
-        let mut last_mass = (S::ZERO, S::ZERO);
-        for &(a, b) in &scratch.pairs {
-            let (Some(body_a), Some(body_b)) = (
-                self.slots[a as usize].body.as_ref(),
-                self.slots[b as usize].body.as_ref(),
-            ) else {
-                continue;
-            };
-            // Most broad-phase pairs of a ball pit are diagonal neighbours
-            // out of reach: reject them before the square root.
-            if let (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) =
-                (body_a.shape, body_b.shape)
-                && circles_out_of_reach(
-                    ra.add(rb),
-                    body_b.position - body_a.position,
-                    scratch.velocities[b as usize] - scratch.velocities[a as usize],
-                    settings.speculative_margin,
-                    h,
-                )
-            {
-                continue;
-            }
-            let contact = contact_between(
-                &body_a.shape,
-                body_a.position,
-                &body_b.shape,
-                body_b.position,
-            );
-            let (va, vb) = (
-                scratch.velocities[a as usize],
-                scratch.velocities[b as usize],
-            );
-            let vn = (vb - va).dot(contact.normal);
-            // Keep the contact if the gap can close within this substep
-            // (plus the margin): s ≤ margin + max(0, -v_n)·h.
-            let reach = settings
-                .speculative_margin
-                .add(vn.neg().max(S::ZERO).mul(h));
-            if contact.separation > reach {
-                continue;
-            }
-            let asleep_a = body_a.kind == BodyKind::Dynamic && !body_a.awake;
-            let asleep_b = body_b.kind == BodyKind::Dynamic && !body_b.awake;
-            // Wake a sleeper only if the pair touches or will touch within
-            // this substep at the current approach speed: a resting awake
-            // body a hair away from a sleeping pile must not wake it.
-            let predicted = contact.separation.add(vn.min(S::ZERO).mul(h));
-            if (asleep_a || asleep_b) && predicted <= settings.linear_slop {
-                if asleep_a {
-                    to_wake.push(a);
-                }
-                if asleep_b {
-                    to_wake.push(b);
-                }
-            }
-            if !to_wake.is_empty() {
-                continue;
-            }
-            let (wa, wb) = (
-                scratch.inverse_masses[a as usize],
-                scratch.inverse_masses[b as usize],
-            );
-            let sum = wa.add(wb);
-            if !sum.is_positive() {
-                continue;
-            }
-            // Skip cache entries of pairs that are gone, pick this pair's.
-            while cache.peek().is_some_and(|c| (c.a, c.b) < (a, b)) {
-                cache.next();
-            }
-            let (normal_impulse, tangent_impulse) = match cache.peek() {
-                Some(c) if (c.a, c.b) == (a, b) => (c.normal_impulse, c.tangent_impulse),
-                _ => (S::ZERO, S::ZERO),
-            };
-            // Geometric mean of the frictions (exact, and sqrt-free, when
-            // they are equal, which is the common case).
-            let friction = if body_a.friction == body_b.friction {
-                body_a.friction
-            } else {
-                body_a.friction.mul(body_b.friction).sqrt()
-            };
-            let restitution = body_a.restitution.max(body_b.restitution);
-            if sum != last_mass.0 {
-                last_mass = (sum, effective_mass(wa, wb));
-            }
-            let mut constraint = ContactConstraint::new(
-                a,
-                b,
-                contact.normal,
-                contact.separation,
-                (wa, wb),
-                last_mass.1,
-                friction,
-                (normal_impulse, tangent_impulse),
-            );
-            constraint.prepare_target(
-                vn,
-                restitution,
-                settings.restitution_threshold,
-                h,
-                inverse_h,
-            );
-            scratch.constraints.push(constraint);
-        }
-        to_wake.sort_unstable();
-        to_wake.dedup();
-        to_wake
+        let StepContext {
+            pairs,
+            velocities,
+            inverse_masses,
+            constraints,
+            ..
+        } = &mut self.scratch;
+        let narrow_phase = NarrowPhase {
+            pairs,
+            velocities,
+            inverse_masses,
+            cache: &self.contacts,
+            speculative_margin: settings.speculative_margin,
+            linear_slop: settings.linear_slop,
+            restitution_threshold: settings.restitution_threshold,
+            h,
+            inverse_h,
+        };
+        let slots = &self.slots;
+        narrow_phase.contact_rows(|i| slots[i as usize].body.as_ref(), constraints)
     }
 
     /// Displacements `v·h`; a bullet's is cut at its earliest time of impact
