@@ -69,7 +69,9 @@ impl<S: Scalar> World<S> {
             self.apply_springs(h);
             self.build_proxies(h);
             let scratch = &mut self.scratch;
-            scratch.broad_phase.find_pairs(&scratch.proxies, &mut scratch.pairs);
+            scratch
+                .broad_phase
+                .find_pairs(&scratch.proxies, &mut scratch.pairs);
             let to_wake = self.build_constraints(h, inverse_h);
             if to_wake.is_empty() {
                 break;
