@@ -10,7 +10,6 @@ mod queries;
 mod query_index;
 mod settings;
 mod step;
-mod step_constraints;
 mod validate;
 
 use std::collections::BTreeMap;

@@ -5,11 +5,11 @@
 //! body) with zero velocity and zero inverse mass, so rope rows share the
 //! contact solver's indexing without special cases.
 
-use super::World;
 use crate::constraints::spring::{spring_impulse, theta_for};
 use crate::constraints::{Anchor, Constraint};
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::{ContactConstraint, effective_mass};
+use crate::world::World;
 
 /// Where an anchor is this substep, how it moves, and which solver slot
 /// carries its velocity.

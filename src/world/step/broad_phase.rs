@@ -1,0 +1,56 @@
+//! Phase "broad phase": swept bounding boxes (proxies) of the bodies, then
+//! the candidate pairs ([`crate::collision::BroadPhase`]).
+
+use crate::collision::{Proxy, ProxyClass};
+use crate::dynamics::BodyKind;
+use crate::math::{Scalar, Vec2};
+use crate::world::World;
+
+impl<S: Scalar> World<S> {
+    /// Swept bounding boxes: the box now ∪ the box after moving `v·h`,
+    /// grown by the speculative margin for bodies that move.
+    pub(super) fn build_proxies(&mut self, h: S) {
+        let margin = self.settings.speculative_margin;
+        let scratch = &mut self.scratch;
+        scratch.proxies.clear();
+        for (i, slot) in self.slots.iter().enumerate() {
+            let Some(body) = &slot.body else { continue };
+            if body.frozen {
+                continue;
+            }
+            let velocity = scratch.velocities[i];
+            let class = match body.kind {
+                BodyKind::Dynamic if body.awake => ProxyClass::Dynamic,
+                BodyKind::Dynamic => ProxyClass::Sleeping,
+                BodyKind::Kinematic if velocity != Vec2::ZERO => ProxyClass::MovingKinematic,
+                _ => ProxyClass::Still,
+            };
+            let now = body.aabb();
+            let swept = if matches!(class, ProxyClass::Dynamic | ProxyClass::MovingKinematic) {
+                let later = body
+                    .shape
+                    .bounding_aabb_at(body.position + velocity.scale(h));
+                now.union(&later).expanded(margin)
+            } else {
+                now
+            };
+            let (lo, hi) = (swept.min(), swept.max());
+            scratch.proxies.push(Proxy {
+                min_x: lo.x,
+                max_x: hi.x,
+                min_y: lo.y,
+                max_y: hi.y,
+                index: u32::try_from(i).unwrap_or(u32::MAX),
+                class: Some(class),
+            });
+        }
+    }
+
+    /// Candidate pairs of the proxies into `scratch.pairs`, sorted.
+    pub(super) fn find_pairs(&mut self) {
+        let scratch = &mut self.scratch;
+        scratch
+            .broad_phase
+            .find_pairs(&scratch.proxies, &mut scratch.pairs);
+    }
+}

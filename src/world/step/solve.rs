@@ -1,0 +1,128 @@
+//! Phases "solve velocities" and "solve positions": rows grouped by shared
+//! bodies and warm-started, then velocity iterations (before integrating)
+//! and position iterations (after), each group directly (block solve) or by
+//! sequential impulses ([`crate::solver`]).
+
+use super::constraints::relinearise_rope_rows;
+use crate::math::{Scalar, Vec2};
+use crate::solver::StepContext;
+use crate::solver::block_solve::{BlockScratch, solve_group_positions, solve_group_velocities};
+use crate::solver::row::{
+    ContactConstraint, solve_friction_row, solve_position_row, solve_velocity_row, warm_start,
+};
+use crate::solver::row_groups::RowGroups;
+use crate::world::World;
+use crate::world::WorldSettings;
+
+impl<S: Scalar> World<S> {
+    /// Rows grouped by shared bodies (chains, piles) and how each group is
+    /// solved, then the warm start: last substep's impulses applied again.
+    pub(super) fn group_and_warm_start(&mut self) {
+        let scratch = &mut self.scratch;
+        let slot_count = scratch.velocities.len();
+        scratch
+            .rope_groups
+            .regroup(&scratch.rope_rows, slot_count, &mut scratch.parents);
+        scratch
+            .contact_groups
+            .regroup(&scratch.constraints, slot_count, &mut scratch.parents);
+        scratch.rope_groups.classify(&scratch.rope_rows, true);
+        scratch.contact_groups.classify(&scratch.constraints, false);
+        warm_start(&scratch.rope_rows, &mut scratch.velocities);
+        warm_start(&scratch.constraints, &mut scratch.velocities);
+    }
+
+    /// Velocity iterations over rope rows, then contact rows.
+    pub(super) fn solve_velocities(&mut self) {
+        let scratch = &mut self.scratch;
+        for _ in 0..self.settings.velocity_iterations {
+            let StepContext {
+                rope_rows,
+                rope_groups,
+                constraints,
+                contact_groups,
+                velocities,
+                rope_block,
+                ..
+            } = scratch;
+            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block);
+            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block);
+        }
+    }
+
+    /// Position iterations (ropes re-linearised each time), moving
+    /// displacements only, so correcting penetration adds no energy.
+    pub(super) fn solve_positions(&mut self) {
+        let settings = &self.settings;
+        let scratch = &mut self.scratch;
+        for _ in 0..settings.position_iterations {
+            let StepContext {
+                rope_rows,
+                rope_groups,
+                rope_geometry,
+                constraints,
+                contact_groups,
+                displacements,
+                rope_block,
+                ..
+            } = scratch;
+            relinearise_rope_rows(rope_rows, rope_geometry, displacements);
+            solve_group_list_positions(rope_rows, rope_groups, displacements, settings, rope_block);
+            solve_group_list_positions(
+                constraints,
+                contact_groups,
+                displacements,
+                settings,
+                rope_block,
+            );
+        }
+    }
+}
+
+/// One velocity pass over grouped rows (ropes or contacts), each group the
+/// way [`RowGroups::classify`] decided: directly (the block solver for the
+/// normal impulses, then friction by sequential impulses) or by sequential
+/// impulses.
+fn solve_group_list_velocities<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    groups: &RowGroups,
+    velocities: &mut [Vec2<S>],
+    block: &mut BlockScratch<S>,
+) {
+    for (group, direct, _) in groups.iter_classified() {
+        if direct {
+            solve_group_velocities(rows, group, velocities, block);
+            for &ri in group {
+                solve_friction_row(&mut rows[ri], velocities);
+            }
+        } else {
+            for &ri in group {
+                solve_velocity_row(&mut rows[ri], velocities);
+            }
+        }
+    }
+}
+
+/// One position pass over grouped rows (same split as the velocities).
+fn solve_group_list_positions<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    groups: &RowGroups,
+    displacements: &mut [Vec2<S>],
+    settings: &WorldSettings<S>,
+    block: &mut BlockScratch<S>,
+) {
+    let (slop, beta, max) = (
+        settings.linear_slop,
+        settings.position_correction,
+        settings.max_correction,
+    );
+    for (group, _, direct) in groups.iter_classified() {
+        if direct {
+            solve_group_positions(rows, group, displacements, slop, beta, max, block);
+        } else {
+            for &ri in group {
+                solve_position_row(&rows[ri], displacements, slop, beta, max);
+            }
+        }
+    }
+}
