@@ -5,12 +5,29 @@ use std::io::Write;
 
 use crate::{Canvas, Colour, RenderError};
 
+/// The transparent palette index of every frame after the first: "this
+/// pixel is as before". Not a drawing colour (those are 0..16).
+pub const UNCHANGED: u8 = 16;
+
+/// The GIF's global palette: the 16 drawing colours, then 16 black entries
+/// (GIF palettes have a power-of-two size; index 16 is [`UNCHANGED`]).
+#[must_use]
+pub fn gif_global_palette() -> Vec<u8> {
+    let mut palette = Colour::gif_palette();
+    palette.resize(32 * 3, 0);
+    palette
+}
+
 /// Writes pictures as the frames of a looping GIF.
 ///
-/// All frames share the 16-colour global palette. Only the rectangle that
-/// changed since the previous frame is stored (the rest is kept from it:
-/// disposal "keep"), and a frame identical to the previous one only extends
-/// its display time, so a scene that comes to rest costs almost nothing.
+/// All frames share one global palette: the 16 colours, padded to 32
+/// entries with index [`UNCHANGED`] as the transparent colour. Only the
+/// rectangle that changed since the previous frame is stored (disposal
+/// "keep": the rest of the picture stays), pixels inside it that did not
+/// change are stored as [`UNCHANGED`] (long runs of one index, which LZW
+/// codes in a few bits), and a frame identical to the previous one only
+/// extends its display time, so a scene that comes to rest costs almost
+/// nothing.
 pub struct GifRecorder<W: Write> {
     encoder: gif::Encoder<W>,
     width: u16,
@@ -46,7 +63,7 @@ impl<W: Write> GifRecorder<W> {
             u16::try_from(width).map_err(|_| RenderError::BadSize { width, height })?,
             u16::try_from(height).map_err(|_| RenderError::BadSize { width, height })?,
         );
-        let mut encoder = gif::Encoder::new(out, w, h, &Colour::gif_palette())?;
+        let mut encoder = gif::Encoder::new(out, w, h, &gif_global_palette())?;
         encoder.set_repeat(gif::Repeat::Infinite)?;
         Ok(GifRecorder {
             encoder,
@@ -92,9 +109,18 @@ impl<W: Write> GifRecorder<W> {
                     return Ok(());
                 }
                 // Delay would overflow: store a one-pixel frame instead.
-                self.push(sub_frame(&indices, self.width, (0, 0, 1, 1), self.delay))?;
+                self.push(sub_frame(
+                    &indices,
+                    None,
+                    self.width,
+                    (0, 0, 1, 1),
+                    self.delay,
+                ))?;
             }
-            Some(rect) => self.push(sub_frame(&indices, self.width, rect, self.delay))?,
+            Some(rect) => {
+                let previous = self.previous.as_deref();
+                self.push(sub_frame(&indices, previous, self.width, rect, self.delay))?;
+            }
         }
         self.previous = Some(indices);
         Ok(())
@@ -156,9 +182,12 @@ fn changed_rect(a: &[u8], b: &[u8], width: u16, height: u16) -> Option<(u16, u16
     ))
 }
 
-/// The GIF frame holding rectangle `rect` of the full-size picture `indices`.
+/// The GIF frame holding rectangle `rect` of the full-size picture
+/// `indices`, with the pixels equal in `previous` (when given) stored as
+/// [`UNCHANGED`].
 fn sub_frame(
     indices: &[u8],
+    previous: Option<&[u8]>,
     width: u16,
     rect: (u16, u16, u16, u16),
     delay: u16,
@@ -168,7 +197,18 @@ fn sub_frame(
     let mut buffer = Vec::with_capacity(usize::from(w) * usize::from(h));
     for y in usize::from(top)..usize::from(top) + usize::from(h) {
         let start = y * stride + usize::from(left);
-        buffer.extend_from_slice(&indices[start..start + usize::from(w)]);
+        let row = &indices[start..start + usize::from(w)];
+        match previous {
+            None => buffer.extend_from_slice(row),
+            Some(previous) => {
+                let before = &previous[start..start + usize::from(w)];
+                buffer.extend(
+                    row.iter()
+                        .zip(before)
+                        .map(|(&now, &was)| if now == was { UNCHANGED } else { now }),
+                );
+            }
+        }
     }
     gif::Frame {
         delay,
@@ -177,6 +217,7 @@ fn sub_frame(
         top,
         width: w,
         height: h,
+        transparent: previous.map(|_| UNCHANGED),
         buffer: Cow::Owned(buffer),
         ..gif::Frame::default()
     }

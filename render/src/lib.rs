@@ -47,7 +47,7 @@ pub use constraint_drawing::{anchor_position, draw_constraint};
 pub use contact_drawing::draw_contact;
 pub use contact_points::{ContactPoints, contact_points};
 pub use error::RenderError;
-pub use gif_recorder::GifRecorder;
+pub use gif_recorder::{GifRecorder, UNCHANGED, gif_global_palette};
 pub use output_format::OutputFormat;
 pub use palette::Colour;
 pub use png_output::write_png;

@@ -1,7 +1,9 @@
 //! GIF and PNG files decode back to the pictures that were drawn: size,
 //! frame count, and the colour of known pixels.
 
-use clockwork2d_render::{Canvas, Colour, GifRecorder, OutputFormat, RenderError, View, write_png};
+use clockwork2d_render::{
+    Canvas, Colour, GifRecorder, OutputFormat, RenderError, UNCHANGED, View, write_png,
+};
 use std::path::Path;
 
 fn view(width: u32, height: u32) -> View {
@@ -34,7 +36,10 @@ fn decode_gif(bytes: &[u8]) -> (u16, u16, Vec<(Vec<u8>, u16)>) {
         for y in 0..usize::from(f.height) {
             for x in 0..usize::from(f.width) {
                 let at = (usize::from(f.top) + y) * usize::from(w) + usize::from(f.left) + x;
-                screen[at] = f.buffer[y * usize::from(f.width) + x];
+                let index = f.buffer[y * usize::from(f.width) + x];
+                if Some(index) != f.transparent {
+                    screen[at] = index;
+                }
             }
         }
         frames.push((screen.clone(), f.delay));
@@ -61,14 +66,13 @@ fn gif_round_trip_gives_back_every_frame() {
     // The dot of frame 2 is at world (0, 0) = pixel (32, 24).
     assert_eq!(frames[2].0[24 * 64 + 32], Colour::Awake.index());
     assert_eq!(frames[0].0[24 * 64 + 32], Colour::Background.index());
-    // The global palette is the crate's.
+    // The global palette is the crate's 16 colours, padded to 32.
     let mut options = gif::DecodeOptions::new();
     options.set_color_output(gif::ColorOutput::Indexed);
     let decoder = options.read_info(bytes.as_slice()).unwrap();
-    assert_eq!(
-        decoder.global_palette().unwrap(),
-        Colour::gif_palette().as_slice()
-    );
+    let palette = decoder.global_palette().unwrap();
+    assert_eq!(&palette[..48], Colour::gif_palette().as_slice());
+    assert_eq!(palette.len(), 32 * 3);
 }
 
 #[test]
@@ -159,4 +163,33 @@ fn the_format_comes_from_the_file_name() {
         );
         assert!(err.to_string().contains(".gif"), "{err}");
     }
+}
+
+#[test]
+fn later_frames_store_only_what_changed() {
+    // Two pictures differing in one 1-unit dot: the second frame is a small
+    // rectangle around the dot, and inside it the pixels that stayed
+    // background are stored as the transparent UNCHANGED index.
+    let mut gif = GifRecorder::new(Vec::new(), 64, 48, 4).unwrap();
+    gif.add_frame(&frame(-2.0)).unwrap();
+    let mut second = frame(-2.0);
+    second.fill_circle((1.0, 1.0), 0.5, Colour::Sleeping);
+    gif.add_frame(&second).unwrap();
+    let bytes = gif.finish().unwrap();
+    let mut options = gif::DecodeOptions::new();
+    options.set_color_output(gif::ColorOutput::Indexed);
+    let mut decoder = options.read_info(bytes.as_slice()).unwrap();
+    let first = decoder.read_next_frame().unwrap().unwrap();
+    assert_eq!(
+        (first.width, first.height, first.transparent),
+        (64, 48, None)
+    );
+    let f = decoder.read_next_frame().unwrap().unwrap();
+    // The dot: radius 5 px around pixel (42, 14): at most 11×11.
+    assert!(f.width <= 11 && f.height <= 11, "{}x{}", f.width, f.height);
+    assert!(f.left >= 36 && f.top >= 8, "at ({}, {})", f.left, f.top);
+    assert_eq!(f.transparent, Some(UNCHANGED));
+    assert!(f.buffer.contains(&UNCHANGED));
+    assert!(f.buffer.contains(&Colour::Sleeping.index()));
+    assert!(!f.buffer.contains(&Colour::Background.index()));
 }
