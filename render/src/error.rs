@@ -19,6 +19,8 @@ pub enum RenderError {
     UnsupportedFormat(PathBuf),
     /// A world without bodies has nothing to frame.
     EmptyWorld,
+    /// A frame every 0 ticks.
+    BadFrameInterval,
     /// Reading or writing a file failed.
     Io(std::io::Error),
     /// The GIF or PNG encoder refused the data.
@@ -40,6 +42,9 @@ impl fmt::Display for RenderError {
             ),
             RenderError::EmptyWorld => {
                 write!(f, "the world has no bodies, so there is nothing to frame")
+            }
+            RenderError::BadFrameInterval => {
+                write!(f, "a frame every 0 ticks is not possible: give 1 or more")
             }
             RenderError::Io(e) => write!(f, "cannot write the picture: {e}"),
             RenderError::Encode(e) => write!(f, "cannot encode the picture: {e}"),

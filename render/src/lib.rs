@@ -38,6 +38,7 @@ mod output_format;
 mod palette;
 mod png_output;
 mod ray_drawing;
+mod render_run;
 mod view;
 mod world_drawing;
 
@@ -52,5 +53,6 @@ pub use output_format::OutputFormat;
 pub use palette::Colour;
 pub use png_output::write_png;
 pub use ray_drawing::draw_ray;
+pub use render_run::{RenderOptions, RenderSummary, render_run};
 pub use view::View;
 pub use world_drawing::{Layers, draw_world, view_of_world, world_extent};
