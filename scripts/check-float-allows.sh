@@ -18,7 +18,13 @@
 #       - below a file's first #[cfg(test)] (unit tests computing reference
 #         values in f64), or
 #     (the CLI crate, cli/, is command-line edge code: reports, timings;
-#     it is not checked).
+#     the render crate, render/, is drawing code: it reads a world's state,
+#     converts it to f64/f32 and draws, and nothing it computes goes back
+#     into a world; neither is checked);
+#   * none of the checked crates depends on the render crate, so drawing
+#     code (floats) cannot become part of what builds or steps a world (the
+#     library itself may depend on fixed, serde and bincode only:
+#     scripts/check-library-deps.sh).
 #
 # Exit 0 when clean; 1 with one line per offending allow otherwise.
 set -euo pipefail
@@ -45,6 +51,12 @@ done
 for manifest in Cargo.toml scene/Cargo.toml determinism/Cargo.toml; do
   if grep -Eq 'float_arithmetic[[:space:]]*=[[:space:]]*("(allow|warn)"|\{[^}]*level[[:space:]]*=[[:space:]]*"(allow|warn)")' "$manifest"; then
     fail "$manifest's lint table must not allow or weaken float_arithmetic"
+  fi
+done
+
+for manifest in scene/Cargo.toml determinism/Cargo.toml; do
+  if grep -q 'clockwork2d-render' "$manifest"; then
+    fail "$manifest must not depend on clockwork2d-render (drawing code uses floats; it stays outside the simulation path)"
   fi
 done
 
@@ -79,7 +91,7 @@ while IFS= read -r file; do
 done < <(grep -rlE "$pattern" src scene/src determinism/src determinism/examples --include='*.rs' || true)
 
 if ((status == 0)); then
-  echo "check-float-allows: ok (clippy::float_arithmetic denied crate-wide; allowed only in the reference scalar impls and unit tests; cli/ is edge code)"
+  echo "check-float-allows: ok (clippy::float_arithmetic denied crate-wide; allowed only in the reference scalar impls and unit tests; cli/ and render/ are edge code)"
 else
   echo "check-float-allows: the simulation path must stay free of f32/f64 arithmetic (see DESIGN.md); convert at the edge with fx()/to_f64() instead" >&2
 fi

@@ -1,6 +1,6 @@
 //! # clockwork2d-render
 //!
-//! Pictures of [clockwork2d](clockwork2d) worlds: bodies (sleeping ones
+//! Pictures of [clockwork2d] worlds: bodies (sleeping ones
 //! drawn differently), contacts with their closest points and normals,
 //! springs, ropes, rays and hits, drawn with `tiny-skia` and written as a
 //! PNG (one picture) or a small animated GIF.

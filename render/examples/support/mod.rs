@@ -22,9 +22,10 @@ impl Demo {
     pub fn start(name: &str, view: View, delay: u16) -> Result<Demo, RenderError> {
         let path = std::env::args_os().nth(1).map_or_else(
             || {
-                PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-                    .join("../docs/demos")
-                    .join(format!("{name}.gif"))
+                // The workspace root is the render crate's parent.
+                let render = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+                let root = render.parent().map_or(render.clone(), PathBuf::from);
+                root.join("docs/demos").join(format!("{name}.gif"))
             },
             PathBuf::from,
         );
