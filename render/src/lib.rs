@@ -55,4 +55,4 @@ pub use png_output::write_png;
 pub use ray_drawing::draw_ray;
 pub use render_run::{RenderOptions, RenderSummary, render_run};
 pub use view::View;
-pub use world_drawing::{Layers, draw_world, view_of_world, world_extent};
+pub use world_drawing::{Layers, MIN_CONTACT_BODY_PX, draw_world, view_of_world, world_extent};

@@ -4,12 +4,17 @@ use clockwork2d::{Scalar, World};
 
 use crate::{Canvas, RenderError, View, contact_points, draw_body, draw_constraint, draw_contact};
 
+/// Contacts are drawn only between bodies at least this many pixels in
+/// half-size on screen.
+pub const MIN_CONTACT_BODY_PX: f64 = 4.0;
+
 /// What [`draw_world`] draws. Everything by default.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Layers {
     /// Bodies (sleeping ones in their own colour).
     pub bodies: bool,
-    /// Touching pairs: closest points and normal.
+    /// Touching pairs: closest points and normal (for bodies of at least
+    /// [`MIN_CONTACT_BODY_PX`] half-size on screen).
     pub contacts: bool,
     /// Springs and ropes.
     pub constraints: bool,
@@ -45,6 +50,16 @@ pub fn draw_world<S: Scalar>(canvas: &mut Canvas, world: &World<S>, layers: &Lay
     if layers.contacts {
         for (a, b) in world.touching_pairs() {
             if let (Some(a), Some(b)) = (world.body(a), world.body(b)) {
+                // Markers larger than the bodies would bury a dense scene
+                // (a pyramid seen whole): skip pairs with a body under
+                // 4 pixels in half-size on screen.
+                let smallest = |body: &clockwork2d::Body<S>| {
+                    let (hx, hy) = body.shape().half_extents().to_f64();
+                    hx.min(hy) * canvas.view().scale
+                };
+                if smallest(a).min(smallest(b)) < MIN_CONTACT_BODY_PX {
+                    continue;
+                }
                 let points = contact_points(&a.shape(), a.position(), &b.shape(), b.position());
                 draw_contact(canvas, &points, layers.normal_length);
             }

@@ -271,3 +271,28 @@ fn bad_sizes_are_refused_with_a_typed_error() {
         Err(clockwork2d_render::RenderError::EmptyWorld)
     ));
 }
+
+#[test]
+fn contacts_are_drawn_between_visible_bodies_only() {
+    // Two unit boxes resting on each other, after a step (so they touch).
+    let mut world: World = World::new(WorldSettings::default());
+    world
+        .add_body(BodyDef::fixed(Shape::aabb(v(5.0, 0.5))).position(v(0.0, -0.5)))
+        .unwrap();
+    world
+        .add_body(BodyDef::dynamic(Shape::aabb(v(0.5, 0.5))).position(v(0.0, 0.5)))
+        .unwrap();
+    world.step();
+    assert_eq!(world.touching_pairs().count(), 1);
+    let count = |scale: f64| {
+        let mut canvas = Canvas::new(View { scale, ..view() }).unwrap();
+        draw_world(&mut canvas, &world, &Layers::default());
+        (0..200)
+            .flat_map(|x| (0..100).map(move |y| (x, y)))
+            .filter(|&(x, y)| canvas.colour_at(x, y) == Some(Colour::ContactPoint))
+            .count()
+    };
+    // 10 px/unit: half-size 5 px, contact drawn; 6 px/unit: 3 px, not.
+    assert!(count(10.0) > 0);
+    assert_eq!(count(6.0), 0);
+}
