@@ -1,6 +1,7 @@
 //! The [`World`]: bodies, the step pipeline, commands, events and queries.
 
 mod bodies;
+mod clone;
 mod command;
 mod command_apply;
 mod constraints_api;
@@ -57,7 +58,7 @@ pub(crate) struct Slot<S: Scalar> {
 /// let p = world.body(ball).unwrap().position();
 /// assert!((p.y.to_f64() - 0.25).abs() < 0.01); // resting on the ground
 /// ```
-#[derive(Clone, Debug, Serialize, Deserialize)]
+#[derive(Debug, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct World<S: Scalar = Fx> {
     pub(crate) settings: WorldSettings<S>,

@@ -228,7 +228,14 @@ pub fn run_peer(options: &PeerOptions, transport: UdpTransport) -> Result<PeerOu
         .and_then(|b| b.add_player(PlayerType::Remote(options.remote), remote_handle))
         .and_then(|b| b.start_p2p_session(transport))
         .map_err(|e| ggrs_error(&e))?;
+    // Checksums only where GGRS sends them (multiples of the detection
+    // interval), and at the last frame, whose hash is the result.
+    let checksum_interval = gcd(
+        options.desync_interval.max(1),
+        options.frames.unsigned_abs(),
+    );
     let mut game: SessionWorld<DuelRules> = SessionWorld::new(arena.world, rules)
+        .with_checksum_interval(checksum_interval)
         .with_forensics(options.desync_interval)
         .record_replay(options.replay_hash_interval);
     let mut script = InputScript::new(options.seed);
@@ -386,4 +393,12 @@ fn write_forensic(
     std::fs::write(&path, bytes)
         .map_err(|e| PeerError::Io(format!("cannot write {}: {e}", path.display())))?;
     Ok(Some(path))
+}
+
+/// Greatest common divisor (Euclid); `gcd(a, 0) = a`.
+fn gcd(mut a: u32, mut b: u32) -> u32 {
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a
 }
