@@ -31,11 +31,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0x0442dbffc212cfa7),
-    ("pyramid", 0xd51bbdd0a8f3e472),
-    ("balls", 0x4a47b0a4ed96b5e0),
-    ("bullets", 0x434f4116b816a931),
-    ("mixed", 0x5cf927410f6872e0),
+    ("stack", 0xe649c8183b832368),
+    ("pyramid", 0x3d01e0036e41895e),
+    ("balls", 0x322195724bcf01bf),
+    ("bullets", 0x8ae034cde28a54b7),
+    ("mixed", 0xa4148b4f85815599),
 ];
 // END GOLDEN
 

@@ -1,10 +1,11 @@
 //! Collision: broad phase, narrow-phase dispatch and the contact cache.
 
 mod broad_phase;
+mod coincident;
 mod contact_cache;
 mod narrow_phase;
 mod pair_sort;
 
 pub(crate) use broad_phase::{BroadPhase, Proxy, ProxyClass};
 pub(crate) use contact_cache::CachedContact;
-pub(crate) use narrow_phase::{NarrowPhase, shape_toi};
+pub(crate) use narrow_phase::{NarrowPhase, contact_between, shape_toi};

@@ -8,7 +8,9 @@ use crate::geometry::{
 use crate::math::{Scalar, Vec2};
 
 use super::CachedContact;
+use super::coincident::coincident_contact;
 use crate::dynamics::{Body, BodyKind};
+use crate::solver::restitution::BounceCandidate;
 use crate::solver::row::{ContactConstraint, effective_mass};
 
 /// The contact between shape `a` at `pa` and shape `b` at `pb` (normal from
@@ -125,6 +127,8 @@ pub(crate) struct NarrowPhase<'a, S: Scalar> {
     pub(crate) linear_slop: S,
     /// Approach speed above which restitution applies.
     pub(crate) restitution_threshold: S,
+    /// The world's gravity (for the bounce's relative acceleration).
+    pub(crate) gravity: Vec2<S>,
     /// The substep `h`.
     pub(crate) h: S,
     /// `1/h`.
@@ -137,6 +141,12 @@ impl<S: Scalar> NarrowPhase<'_, S> {
     /// cache for warm starting (both lists are sorted by pair). `body(i)`
     /// is the body of slot `i`.
     ///
+    /// Rows that close this substep faster than the restitution threshold
+    /// with a positive restitution go to `bounces` too (cleared first): the
+    /// solve treats every row as speculative only, and the bounce is
+    /// re-timed to the instant of contact after the position update
+    /// ([`crate::solver::restitution`]).
+    ///
     /// Returns the sleeping bodies an awake body touches (sorted, without
     /// repeats), to be woken; when it is not empty the rows are incomplete
     /// and the caller redoes the phase after waking them.
@@ -144,6 +154,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         &self,
         body: impl Fn(u32) -> Option<&'b Body<S>>,
         rows: &mut Vec<ContactConstraint<S>>,
+        bounces: &mut Vec<BounceCandidate<S>>,
     ) -> Vec<u32>
     where
         S: 'b,
@@ -156,10 +167,12 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             speculative_margin,
             linear_slop,
             restitution_threshold,
+            gravity,
             h,
             inverse_h,
         } = *self;
         rows.clear();
+        bounces.clear();
         let mut to_wake = Vec::new();
         let mut cache = cache.iter().peekable();
         // The last inverse-mass sum and its reciprocal: piles of equal
@@ -183,19 +196,52 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             {
                 continue;
             }
-            let contact = contact_between(
-                &body_a.shape,
-                body_a.position,
-                &body_b.shape,
-                body_b.position,
-            );
+            // Same centre: the geometry has no normal; take the pair's own
+            // spread direction (see `collision::coincident`).
+            let mut contact = if body_a.position == body_b.position {
+                coincident_contact(a, &body_a.shape, b, &body_b.shape)
+            } else {
+                contact_between(
+                    &body_a.shape,
+                    body_a.position,
+                    &body_b.shape,
+                    body_b.position,
+                )
+            };
             let (va, vb) = (velocities[a as usize], velocities[b as usize]);
-            let vn = (vb - va).dot(contact.normal);
+            let mut vn = (vb - va).dot(contact.normal);
             // Keep the contact if the gap can close within this substep
             // (plus the margin): s ≤ margin + max(0, -v_n)·h.
             let reach = speculative_margin.add(vn.neg().max(S::ZERO).mul(h));
             if contact.separation > reach {
                 continue;
+            }
+            // A gap the current motion would close along the start normal
+            // (an active speculative row): ask the exact time of impact
+            // whether it really closes. A miss (passing a corner or a gap
+            // with clearance) makes no row: it would stop or deflect a body
+            // that never touches (a ghost hit). A hit re-aims the row at
+            // the impact: its normal, and the gap along it that the motion
+            // closes, `s' = −t·(Δv·n')·h`, so the row lets the pair move
+            // exactly to the impact. Gaps within the slop count as
+            // touching and are left alone.
+            if contact.separation > linear_slop && vn.neg().mul(h) > contact.separation {
+                match shape_toi(
+                    &body_a.shape,
+                    body_a.position,
+                    va.scale(h),
+                    &body_b.shape,
+                    body_b.position,
+                    vb.scale(h),
+                ) {
+                    Toi::Miss => continue,
+                    Toi::Hit { t, normal } => {
+                        vn = (vb - va).dot(normal);
+                        contact.normal = normal;
+                        contact.separation = t.mul(vn.mul(h)).neg().max(S::ZERO);
+                    }
+                    Toi::Overlapping => {}
+                }
             }
             let asleep_a = body_a.kind == BodyKind::Dynamic && !body_a.awake;
             let asleep_b = body_b.kind == BodyKind::Dynamic && !body_b.awake;
@@ -223,8 +269,14 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             while cache.peek().is_some_and(|c| (c.a, c.b) < (a, b)) {
                 cache.next();
             }
+            // Warm start only contacts that touch: a speculative row's
+            // impulse of the last substep (a bounce, a catch) says nothing
+            // about this one, and re-applied it can drive the body the
+            // wrong way (into what is behind it).
             let (normal_impulse, tangent_impulse) = match cache.peek() {
-                Some(c) if (c.a, c.b) == (a, b) => (c.normal_impulse, c.tangent_impulse),
+                Some(c) if (c.a, c.b) == (a, b) && contact.separation <= linear_slop => {
+                    (c.normal_impulse, c.tangent_impulse)
+                }
                 _ => (S::ZERO, S::ZERO),
             };
             // Geometric mean of the frictions (exact, and sqrt-free, when
@@ -248,7 +300,26 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                 friction,
                 (normal_impulse, tangent_impulse),
             );
-            constraint.prepare_target(vn, restitution, restitution_threshold, h, inverse_h);
+            // Speculative only in the solve; the bounce comes after the
+            // position update.
+            constraint.prepare_target(vn, S::ZERO, restitution_threshold, h, inverse_h);
+            let meets = vn.neg().mul(h) >= contact.separation;
+            if restitution.is_positive() && vn < restitution_threshold.neg() && meets {
+                // Gravity acts on awake dynamic bodies only (scaled).
+                let accel = |body: &Body<S>| {
+                    if body.is_simulated_dynamic() {
+                        gravity.scale(body.gravity_scale)
+                    } else {
+                        Vec2::ZERO
+                    }
+                };
+                bounces.push(BounceCandidate {
+                    row: u32::try_from(rows.len()).unwrap_or(u32::MAX),
+                    approach: vn,
+                    accel_n: (accel(body_b) - accel(body_a)).dot(contact.normal),
+                    restitution,
+                });
+            }
             rows.push(constraint);
         }
         to_wake.sort_unstable();

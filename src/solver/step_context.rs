@@ -1,6 +1,7 @@
 //! The step context: working buffers of a step, reused from step to step so that a world in
 //! steady state allocates nothing. Derived data: never part of the state.
 
+use super::restitution::BounceCandidate;
 use crate::collision::CachedContact;
 use crate::collision::{BroadPhase, Proxy};
 use crate::math::{Scalar, Vec2};
@@ -51,4 +52,15 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) moving: Vec<bool>,
     /// Per-island least sleep time.
     pub(crate) island_time: Vec<S>,
+    /// Contact rows of this substep that may bounce (see
+    /// `dynamics::restitution`).
+    pub(crate) bounce_candidates: Vec<BounceCandidate<S>>,
+    /// Slots whose displacement a bounce grew, with the displacement
+    /// before it (the start of the rebound motion).
+    pub(crate) rebounds: Vec<(u32, Vec2<S>)>,
+    /// `(slot, partner)` for every broad-phase partner of a rebounding
+    /// slot, sorted.
+    pub(crate) rebound_partners: Vec<(u32, u32)>,
+    /// Displacements before the position pass (to bound its corrections).
+    pub(crate) displacements_before_correction: Vec<Vec2<S>>,
 }

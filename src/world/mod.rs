@@ -23,6 +23,7 @@ pub use events::Event;
 pub use queries::{BodyRayHit, QueryFilter};
 pub use query_index::QueryIndex;
 pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
+pub use step::contacts::MAX_BULLET_IMPACTS;
 
 use crate::Fx;
 use crate::collision::CachedContact;

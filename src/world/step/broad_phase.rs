@@ -27,10 +27,21 @@ impl<S: Scalar> World<S> {
             };
             let now = body.aabb();
             let swept = if matches!(class, ProxyClass::Dynamic | ProxyClass::MovingKinematic) {
-                let later = body
-                    .shape
-                    .bounding_aabb_at(body.position + velocity.scale(h));
-                now.union(&later).expanded(margin)
+                // A body may bounce within the substep and travel the rest
+                // of its path `|v|·h` in another direction (a bullet: in
+                // several), so a fast dynamic body's box is every point
+                // within `(|v_x| + |v_y|)·h ≥ |v|·h` of where it starts: the
+                // rebound sweep then knows every partner it can reach. A
+                // slow one's path is within the margin already.
+                let reach = velocity.x.abs().add(velocity.y.abs()).mul(h);
+                if class == ProxyClass::Dynamic && reach > margin {
+                    now.expanded(reach.add(margin))
+                } else {
+                    let later = body
+                        .shape
+                        .bounding_aabb_at(body.position + velocity.scale(h));
+                    now.union(&later).expanded(margin)
+                }
             } else {
                 now
             };

@@ -15,6 +15,7 @@
 //! | grouping, warm start, velocity iterations | [`solve`] |
 //! | integrate (bullets' time of impact) | [`integrate`] |
 //! | position iterations | [`solve`] |
+//! | bound corrections, out of immovable bodies, bounces, rebound sweep | [`contacts`] |
 //! | write back (bounds: freeze) | [`integrate`] |
 //! | contact cache, rope impulses | [`contact_cache`], [`constraints`] |
 //! | per tick: sleep | [`sleep`] |
@@ -26,6 +27,7 @@
 mod broad_phase;
 mod constraints;
 mod contact_cache;
+pub(crate) mod contacts;
 mod events;
 mod integrate;
 mod narrow_phase;
@@ -99,7 +101,12 @@ impl<S: Scalar> World<S> {
         self.group_and_warm_start();
         self.solve_velocities();
         self.integrate(h);
+        self.remember_displacements();
         self.solve_positions();
+        self.bound_corrections(h);
+        self.project_out_of_immovable();
+        self.bounce(h);
+        self.sweep_rebounds();
         self.write_back();
         self.update_contact_cache();
         self.store_rope_impulses();

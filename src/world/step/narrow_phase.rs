@@ -16,6 +16,7 @@ impl<S: Scalar> World<S> {
             velocities,
             inverse_masses,
             constraints,
+            bounce_candidates,
             ..
         } = &mut self.scratch;
         let narrow_phase = NarrowPhase {
@@ -26,10 +27,15 @@ impl<S: Scalar> World<S> {
             speculative_margin: settings.speculative_margin,
             linear_slop: settings.linear_slop,
             restitution_threshold: settings.restitution_threshold,
+            gravity: settings.gravity,
             h,
             inverse_h,
         };
         let slots = &self.slots;
-        narrow_phase.contact_rows(|i| slots[i as usize].body.as_ref(), constraints)
+        narrow_phase.contact_rows(
+            |i| slots[i as usize].body.as_ref(),
+            constraints,
+            bounce_candidates,
+        )
     }
 }

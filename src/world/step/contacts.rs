@@ -1,0 +1,261 @@
+//! Phases "contacts after the position pass": bounding the position
+//! corrections, keeping dynamic bodies out of immovable ones, the bounces
+//! (re-timed to the instant of contact, [`crate::solver::restitution`]),
+//! and sweeping the motion the bounces add.
+//!
+//! Order within a substep (see `step/mod.rs`): velocity solve → integrate →
+//! [`World::remember_displacements`] → position pass →
+//! [`World::bound_corrections`] → [`World::project_out_of_immovable`] →
+//! [`World::bounce`] → [`World::sweep_rebounds`] → write back.
+
+use crate::collision::{contact_between, shape_toi};
+use crate::geometry::Toi;
+use crate::math::{Scalar, Vec2};
+use crate::solver::StepContext;
+use crate::solver::restitution::apply_bounces;
+use crate::world::World;
+
+/// Most times of impact a bullet takes in one substep: the bounce found by
+/// the contact solver, then up to `MAX_BULLET_IMPACTS − 1` more found by
+/// sweeping its rebound. A bullet that reaches the cap stops at its last
+/// impact for the rest of the substep (its velocity, already reflected,
+/// is kept). 32 covers a bullet at the speed limit (4096 u/s, 68 units per
+/// tick) between walls 2 units apart, or 1000 u/s between walls 0.55
+/// apart, at 60 Hz.
+pub const MAX_BULLET_IMPACTS: u32 = 32;
+
+impl<S: Scalar> World<S> {
+    /// Keeps the displacements before the position pass, for
+    /// [`World::bound_corrections`].
+    pub(super) fn remember_displacements(&mut self) {
+        let StepContext {
+            displacements,
+            displacements_before_correction,
+            ..
+        } = &mut self.scratch;
+        displacements_before_correction.clear();
+        displacements_before_correction.extend_from_slice(displacements);
+    }
+
+    /// The bounces of this substep ([`crate::solver::restitution`]): the
+    /// contacts that met fast enough leave it with `e` times their speed at
+    /// the instant of contact; the bodies whose motion grew are listed for
+    /// [`World::sweep_rebounds`].
+    pub(super) fn bounce(&mut self, h: S) {
+        let scratch = &mut self.scratch;
+        scratch.rebounds.clear();
+        apply_bounces(
+            &scratch.constraints,
+            &scratch.bounce_candidates,
+            h,
+            &mut scratch.velocities,
+            &mut scratch.displacements,
+            &mut scratch.rebounds,
+        );
+    }
+
+    /// Limits each body's displacement by the position pass to half the
+    /// speculative margin per axis (so under `margin/√2` in length).
+    ///
+    /// Why: a pair's row exists only if the bodies can come within the
+    /// margin this substep; any body further away has no row, so nothing
+    /// would stop a correction from pushing into it. A correction shorter
+    /// than the margin cannot close a gap the row test left out (that gap
+    /// exceeds `margin + max(0, −v_n)·h`, and the velocity motion closes at
+    /// most `max(0, −v_n)·h` of it). Without the bound, a crowd spawned at
+    /// one point receives hundreds of pushes per body per pass and flings
+    /// bodies through walls. A deep overlap is therefore resolved at up to
+    /// `margin/2` per axis and substep (3 units/s at the defaults).
+    ///
+    /// A body the pass moved by more than it may move while counting as
+    /// resting (`sleep_linear_threshold·h` on an axis) is still being pushed
+    /// out of an overlap: its sleep timer restarts, so a pile does not fall
+    /// asleep half separated (position corrections leave velocities alone,
+    /// so the velocity test alone would let it).
+    pub(super) fn bound_corrections(&mut self, h: S) {
+        let limit = self.settings.speculative_margin.half();
+        let resting = self.settings.sleep_linear_threshold.mul(h);
+        let (lo, hi) = (Vec2::new(limit.neg(), limit.neg()), Vec2::new(limit, limit));
+        let StepContext {
+            displacements,
+            displacements_before_correction,
+            ..
+        } = &mut self.scratch;
+        for ((d, before), slot) in displacements
+            .iter_mut()
+            .zip(displacements_before_correction.iter())
+            .zip(self.slots.iter_mut())
+        {
+            let correction = *d - *before;
+            if correction == Vec2::ZERO {
+                continue;
+            }
+            let bounded = correction.clamp(lo, hi);
+            if bounded != correction {
+                *d = *before + bounded;
+            }
+            if (bounded.x.abs() > resting || bounded.y.abs() > resting)
+                && let Some(body) = slot.body.as_mut()
+            {
+                body.sleep_time = S::ZERO;
+            }
+        }
+    }
+
+    /// No dynamic body ends a substep deeper than the linear slop in an
+    /// immovable one (fixed, kinematic, asleep): each such row's remaining
+    /// penetration is removed entirely from the movable body, along the
+    /// row's normal. Two passes, so a body in a corner (two such rows) is
+    /// out of both (axis-aligned walls: exact after the first pass unless
+    /// the rows are not orthogonal).
+    ///
+    /// Crowd pressure acts through the dynamic–dynamic rows of the velocity
+    /// and position passes, which may leave a body pushed into a wall; this
+    /// is the last word, so no amount of pressure puts a body through.
+    pub(super) fn project_out_of_immovable(&mut self) {
+        let slop = self.settings.linear_slop;
+        let StepContext {
+            constraints,
+            displacements,
+            ..
+        } = &mut self.scratch;
+        for _ in 0..2 {
+            for c in constraints.iter() {
+                let (ia, ib) = (c.a as usize, c.b as usize);
+                let (movable_a, movable_b) = (
+                    c.inverse_mass_a.is_positive(),
+                    c.inverse_mass_b.is_positive(),
+                );
+                if movable_a == movable_b {
+                    continue;
+                }
+                let separation = c
+                    .separation
+                    .add((displacements[ib] - displacements[ia]).dot(c.normal));
+                // Depth beyond the slop: −slop − s > 0.
+                let deficit = slop.neg().sub(separation);
+                if !deficit.is_positive() {
+                    continue;
+                }
+                let push = c.normal.scale(deficit);
+                if movable_a {
+                    displacements[ia] -= push;
+                } else {
+                    displacements[ib] += push;
+                }
+            }
+        }
+    }
+
+    /// Sweeps the motion each bounce added against the bouncing body's
+    /// broad-phase partners (at their end-of-substep positions), so a
+    /// rebound cannot pass through what is behind it.
+    ///
+    /// A body that is not a bullet stops at the first thing its rebound
+    /// meets (the next substep's contact handles that impact). A bullet
+    /// bounces off immovable bodies (fixed, kinematic) within the substep,
+    /// with the pair's restitution, and sweeps on, up to
+    /// [`MAX_BULLET_IMPACTS`] impacts in all; it stops at a dynamic body
+    /// (whose response needs the solver) or at the cap.
+    ///
+    /// A partner the body already touches where its rebound starts is an
+    /// obstacle at once if the rebound goes into it (along the pair's
+    /// contact normal), and none if it leaves it (the body it bounced off).
+    pub(super) fn sweep_rebounds(&mut self) {
+        if self.scratch.rebounds.is_empty() {
+            return;
+        }
+        let scratch = &mut self.scratch;
+        // One sweep per body: keep each slot's first bounce (its earliest
+        // displacement is the start of its rebound).
+        scratch.rebounds.sort_by_key(|r| r.0);
+        scratch.rebounds.dedup_by_key(|r| r.0);
+        let rebounding =
+            |slot: u32, list: &[(u32, Vec2<S>)]| list.binary_search_by_key(&slot, |r| r.0).is_ok();
+        scratch.rebound_partners.clear();
+        for &(a, b) in &scratch.pairs {
+            if rebounding(a, &scratch.rebounds) {
+                scratch.rebound_partners.push((a, b));
+            }
+            if rebounding(b, &scratch.rebounds) {
+                scratch.rebound_partners.push((b, a));
+            }
+        }
+        scratch.rebound_partners.sort_unstable();
+        for &(slot, before) in &scratch.rebounds {
+            let Some(body) = self.slots[slot as usize].body.as_ref() else {
+                continue;
+            };
+            let bullet = body.bullet && body.is_simulated_dynamic();
+            let cap = if bullet { MAX_BULLET_IMPACTS - 1 } else { 1 };
+            let first = scratch.rebound_partners.partition_point(|&(s, _)| s < slot);
+            let last = scratch
+                .rebound_partners
+                .partition_point(|&(s, _)| s <= slot);
+            let partners = &scratch.rebound_partners[first..last];
+            let index = slot as usize;
+            let mut at = body.position + before;
+            let mut rest = scratch.displacements[index] - before;
+            let mut velocity = scratch.velocities[index];
+            for impact in 0..cap {
+                let mut earliest: Option<(S, Vec2<S>, u32)> = None;
+                for &(_, other) in partners {
+                    let Some(ob) = self.slots[other as usize].body.as_ref() else {
+                        continue;
+                    };
+                    let other_at = ob.position + scratch.displacements[other as usize];
+                    let hit =
+                        match shape_toi(&body.shape, at, rest, &ob.shape, other_at, Vec2::ZERO) {
+                            Toi::Hit { t, normal } => Some((t, normal)),
+                            // Touching at the start: an obstacle at t = 0 if the
+                            // motion goes into it, none if it leaves it.
+                            Toi::Overlapping => {
+                                let normal =
+                                    contact_between(&body.shape, at, &ob.shape, other_at).normal;
+                                rest.dot(normal).is_positive().then_some((S::ZERO, normal))
+                            }
+                            Toi::Miss => None,
+                        };
+                    if let Some((t, normal)) = hit
+                        && earliest.is_none_or(|(best, _, _)| t < best)
+                    {
+                        earliest = Some((t, normal, other));
+                    }
+                }
+                let Some((t, normal, other)) = earliest else {
+                    break;
+                };
+                let travelled = rest.scale(t);
+                at += travelled;
+                let remaining = rest - travelled;
+                let immovable = !scratch.inverse_masses[other as usize].is_positive();
+                if !bullet || !immovable || impact + 1 == cap {
+                    rest = Vec2::ZERO;
+                    break;
+                }
+                let Some(ob) = self.slots[other as usize].body.as_ref() else {
+                    rest = Vec2::ZERO;
+                    break;
+                };
+                // Reflect off the immovable partner (normal from the bullet
+                // to it): relative approach v_n = (v_o − v)·n < 0 becomes
+                // −e·v_n, i.e. v += (1 + e)·v_n·n; the remaining motion's
+                // component into the partner is reflected the same way.
+                let e1 = S::ONE.add(body.restitution.max(ob.restitution));
+                let vn = (scratch.velocities[other as usize] - velocity).dot(normal);
+                if vn.is_negative() {
+                    velocity += normal.scale(e1.mul(vn));
+                }
+                let into = remaining.dot(normal);
+                rest = if into.is_positive() {
+                    remaining - normal.scale(e1.mul(into))
+                } else {
+                    remaining
+                };
+            }
+            at += rest;
+            scratch.displacements[index] = at - body.position;
+            scratch.velocities[index] = velocity;
+        }
+    }
+}
