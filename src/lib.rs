@@ -17,15 +17,15 @@
 
 mod collision;
 pub mod constraints;
-pub mod diff;
 pub mod dynamics;
 pub mod geometry;
-pub mod hash;
 pub mod math;
 pub mod replay;
-pub mod snapshot;
 mod solver;
+mod state;
 pub mod world;
+
+pub use state::{diff, hash, snapshot};
 
 pub use constraints::{Anchor, Constraint, ConstraintId};
 pub use dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};

@@ -11,7 +11,6 @@ mod queries;
 mod query_index;
 mod settings;
 mod step;
-mod validate;
 
 use std::collections::BTreeMap;
 
@@ -24,6 +23,8 @@ pub use queries::{BodyRayHit, QueryFilter};
 pub use query_index::QueryIndex;
 pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
 pub use step::contacts::MAX_BULLET_IMPACTS;
+
+pub(crate) use bodies::MAX_SHAPE_SIZE;
 
 use crate::Fx;
 use crate::collision::CachedContact;

@@ -8,12 +8,11 @@
 //! index out of bounds or loop forever. One function per part of the state,
 //! named like the parts of the state hash.
 
-use super::World;
-use super::bodies::MAX_SHAPE_SIZE;
 use crate::dynamics::{Body, BodyId, BodyKind, NO_ISLAND};
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2, WORLD_LIMIT};
 use crate::snapshot::SnapshotError;
+use crate::world::{MAX_SHAPE_SIZE, World};
 
 /// `true` if `v` is NaN (only the float reference scalars have one).
 fn is_nan<S: Scalar>(v: S) -> bool {
