@@ -57,6 +57,20 @@ pub fn diff_snapshots(a: &[u8], b: &[u8]) -> Result<Vec<Difference>, SnapshotErr
 /// states are identical (and so are their hashes).
 #[must_use]
 pub fn diff_worlds<S: Scalar>(a: &World<S>, b: &World<S>) -> Vec<Difference> {
+    // Exhaustive on purpose (no `..`): a new field in `World` fails to
+    // compile here until it is compared below (or named as derived).
+    let World {
+        settings: _,             // world
+        tick: _,                 // world
+        slots: _,                // bodies
+        free_list: _,            // allocator
+        contacts: _,             // contacts
+        sleeping_islands: _,     // sleep
+        constraint_slots: _,     // constraints
+        constraint_free_list: _, // constraints
+        events: _,               // events
+        scratch: _,              // the step context: derived, never compared
+    } = a;
     let mut d = Diff { out: Vec::new() };
     d.world(a, b);
     d.bodies(a, b);

@@ -49,7 +49,11 @@ use crate::constraints::{Anchor, Constraint};
 use crate::dynamics::BodyKind;
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2};
-use crate::world::World;
+use std::collections::BTreeMap;
+
+use crate::collision::CachedContact;
+use crate::constraints::ConstraintSlot;
+use crate::world::{Slot, World, WorldSettings};
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;
@@ -311,163 +315,201 @@ impl<S: Scalar> World<S> {
     /// place that lists the parts and their order, so the 64- and the
     /// 128-bit hashes cannot disagree about what the state is.
     fn part_hashers<H: StateSink + Default>(&self) -> [H; PART_COUNT] {
+        // Exhaustive on purpose (no `..`): a new field in `World` fails to
+        // compile here until it is hashed or named as not being state.
+        let World {
+            settings,
+            tick,
+            slots,
+            free_list,
+            contacts,
+            sleeping_islands,
+            constraint_slots,
+            constraint_free_list,
+            // This tick's output, not state that affects a later step.
+            events: _,
+            // Derived buffers of the step (the step context).
+            scratch: _,
+        } = self;
         let mut parts: [H; PART_COUNT] = Default::default();
-        let [world, bodies, contacts, sleep, allocator, constraints] = &mut parts;
-        self.feed_world(world);
-        self.feed_bodies(bodies);
-        self.feed_contacts(contacts);
-        self.feed_sleep(sleep);
-        self.feed_allocator(allocator);
-        self.feed_constraints(constraints);
+        let [world, bodies, contacts_part, sleep, allocator, constraints] = &mut parts;
+        feed_world(world, settings, *tick);
+        feed_bodies(bodies, slots);
+        feed_contacts(contacts_part, contacts);
+        feed_sleep(sleep, sleeping_islands);
+        feed_allocator(allocator, free_list);
+        feed_constraints(constraints, constraint_slots, constraint_free_list);
         parts
     }
+}
 
-    fn feed_world<H: StateSink>(&self, h: &mut H) {
-        let s = &self.settings;
-        h.u8(S::ID);
-        h.u64(self.tick);
-        h.vec2(s.gravity);
-        h.scalar(s.dt);
-        h.u32(s.velocity_iterations);
-        h.u32(s.position_iterations);
-        h.u32(s.substeps);
-        h.bool(s.sleep_enabled);
+fn feed_world<S: Scalar, H: StateSink>(h: &mut H, settings: &WorldSettings<S>, tick: u64) {
+    // Exhaustive on purpose: a new setting fails to compile here until it
+    // is hashed (in a fixed place of the order below).
+    let WorldSettings {
+        gravity,
+        dt,
+        velocity_iterations,
+        position_iterations,
+        substeps,
+        sleep_enabled,
+        sleep_linear_threshold,
+        time_to_sleep,
+        restitution_threshold,
+        linear_slop,
+        position_correction,
+        max_correction,
+        speculative_margin,
+        max_speed,
+        bounds,
+    } = *settings;
+    h.u8(S::ID);
+    h.u64(tick);
+    h.vec2(gravity);
+    h.scalar(dt);
+    h.u32(velocity_iterations);
+    h.u32(position_iterations);
+    h.u32(substeps);
+    h.bool(sleep_enabled);
+    for v in [
+        sleep_linear_threshold,
+        time_to_sleep,
+        restitution_threshold,
+        linear_slop,
+        position_correction,
+        max_correction,
+        speculative_margin,
+        max_speed,
+    ] {
+        h.scalar(v);
+    }
+    h.vec2(bounds.center);
+    h.vec2(bounds.half_extents);
+}
+
+fn feed_bodies<S: Scalar, H: StateSink>(h: &mut H, slots: &[Slot<S>]) {
+    h.u32(len_u32(slots.len()));
+    for slot in slots {
+        h.u32(slot.generation);
+        h.bool(slot.body.is_some());
+        let Some(b) = &slot.body else { continue };
+        h.u8(match b.kind {
+            BodyKind::Fixed => 0,
+            BodyKind::Kinematic => 1,
+            BodyKind::Dynamic => 2,
+        });
+        match b.shape {
+            Shape::Circle { radius } => {
+                h.u8(0);
+                h.scalar(radius);
+            }
+            Shape::Aabb { half_extents } => {
+                h.u8(1);
+                h.vec2(half_extents);
+            }
+        }
+        h.vec2(b.position);
+        h.vec2(b.velocity);
         for v in [
-            s.sleep_linear_threshold,
-            s.time_to_sleep,
-            s.restitution_threshold,
-            s.linear_slop,
-            s.position_correction,
-            s.max_correction,
-            s.speculative_margin,
-            s.max_speed,
+            b.mass,
+            b.inverse_mass,
+            b.restitution,
+            b.friction,
+            b.gravity_scale,
         ] {
             h.scalar(v);
         }
-        h.vec2(s.bounds.center);
-        h.vec2(s.bounds.half_extents);
+        h.bool(b.bullet);
+        h.bool(b.awake);
+        h.bool(b.frozen);
+        h.scalar(b.sleep_time);
+        h.u32(b.island);
     }
+}
 
-    fn feed_bodies<H: StateSink>(&self, h: &mut H) {
-        h.u32(len_u32(self.slots.len()));
-        for slot in &self.slots {
-            h.u32(slot.generation);
-            h.bool(slot.body.is_some());
-            let Some(b) = &slot.body else { continue };
-            h.u8(match b.kind {
-                BodyKind::Fixed => 0,
-                BodyKind::Kinematic => 1,
-                BodyKind::Dynamic => 2,
-            });
-            match b.shape {
-                Shape::Circle { radius } => {
-                    h.u8(0);
-                    h.scalar(radius);
-                }
-                Shape::Aabb { half_extents } => {
-                    h.u8(1);
-                    h.vec2(half_extents);
-                }
+fn feed_contacts<S: Scalar, H: StateSink>(h: &mut H, contacts: &[CachedContact<S>]) {
+    h.u32(len_u32(contacts.len()));
+    for c in contacts {
+        h.u32(c.a);
+        h.u32(c.b);
+        h.scalar(c.normal_impulse);
+        h.scalar(c.tangent_impulse);
+        h.bool(c.touching);
+    }
+}
+
+fn feed_sleep<H: StateSink>(h: &mut H, sleeping_islands: &BTreeMap<u32, Vec<u32>>) {
+    h.u32(len_u32(sleeping_islands.len()));
+    for (key, members) in sleeping_islands {
+        h.u32(*key);
+        h.u32(len_u32(members.len()));
+        for m in members {
+            h.u32(*m);
+        }
+    }
+}
+
+fn feed_constraints<S: Scalar, H: StateSink>(
+    h: &mut H,
+    constraint_slots: &[ConstraintSlot<S>],
+    constraint_free_list: &[u32],
+) {
+    h.u32(len_u32(constraint_slots.len()));
+    for slot in constraint_slots {
+        h.u32(slot.generation);
+        h.bool(slot.entry.is_some());
+        let Some(entry) = &slot.entry else { continue };
+        let (a, b) = entry.constraint.anchors();
+        let tag = match entry.constraint {
+            Constraint::BendySpring { .. } => 0,
+            Constraint::RadialSpring { .. } => 1,
+            Constraint::Rope { .. } => 2,
+        };
+        h.u8(tag);
+        hash_anchor(h, &a);
+        hash_anchor(h, &b);
+        match entry.constraint {
+            Constraint::BendySpring {
+                rest_offset,
+                stiffness,
+                damping,
+                ..
+            } => {
+                h.vec2(rest_offset);
+                h.vec2(stiffness);
+                h.scalar(damping);
             }
-            h.vec2(b.position);
-            h.vec2(b.velocity);
-            for v in [
-                b.mass,
-                b.inverse_mass,
-                b.restitution,
-                b.friction,
-                b.gravity_scale,
-            ] {
-                h.scalar(v);
+            Constraint::RadialSpring {
+                rest_length,
+                stiffness,
+                damping,
+                ..
+            } => {
+                h.scalar(rest_length);
+                h.scalar(stiffness);
+                h.scalar(damping);
             }
-            h.bool(b.bullet);
-            h.bool(b.awake);
-            h.bool(b.frozen);
-            h.scalar(b.sleep_time);
-            h.u32(b.island);
-        }
-    }
-
-    fn feed_contacts<H: StateSink>(&self, h: &mut H) {
-        h.u32(len_u32(self.contacts.len()));
-        for c in &self.contacts {
-            h.u32(c.a);
-            h.u32(c.b);
-            h.scalar(c.normal_impulse);
-            h.scalar(c.tangent_impulse);
-            h.bool(c.touching);
-        }
-    }
-
-    fn feed_sleep<H: StateSink>(&self, h: &mut H) {
-        h.u32(len_u32(self.sleeping_islands.len()));
-        for (key, members) in &self.sleeping_islands {
-            h.u32(*key);
-            h.u32(len_u32(members.len()));
-            for m in members {
-                h.u32(*m);
+            Constraint::Rope {
+                max_length,
+                restitution,
+                ..
+            } => {
+                h.scalar(max_length);
+                h.scalar(restitution);
             }
         }
+        h.scalar(entry.impulse);
     }
-
-    fn feed_constraints<H: StateSink>(&self, h: &mut H) {
-        h.u32(len_u32(self.constraint_slots.len()));
-        for slot in &self.constraint_slots {
-            h.u32(slot.generation);
-            h.bool(slot.entry.is_some());
-            let Some(entry) = &slot.entry else { continue };
-            let (a, b) = entry.constraint.anchors();
-            let tag = match entry.constraint {
-                Constraint::BendySpring { .. } => 0,
-                Constraint::RadialSpring { .. } => 1,
-                Constraint::Rope { .. } => 2,
-            };
-            h.u8(tag);
-            hash_anchor(h, &a);
-            hash_anchor(h, &b);
-            match entry.constraint {
-                Constraint::BendySpring {
-                    rest_offset,
-                    stiffness,
-                    damping,
-                    ..
-                } => {
-                    h.vec2(rest_offset);
-                    h.vec2(stiffness);
-                    h.scalar(damping);
-                }
-                Constraint::RadialSpring {
-                    rest_length,
-                    stiffness,
-                    damping,
-                    ..
-                } => {
-                    h.scalar(rest_length);
-                    h.scalar(stiffness);
-                    h.scalar(damping);
-                }
-                Constraint::Rope {
-                    max_length,
-                    restitution,
-                    ..
-                } => {
-                    h.scalar(max_length);
-                    h.scalar(restitution);
-                }
-            }
-            h.scalar(entry.impulse);
-        }
-        h.u32(len_u32(self.constraint_free_list.len()));
-        for i in &self.constraint_free_list {
-            h.u32(*i);
-        }
+    h.u32(len_u32(constraint_free_list.len()));
+    for i in constraint_free_list {
+        h.u32(*i);
     }
+}
 
-    fn feed_allocator<H: StateSink>(&self, h: &mut H) {
-        h.u32(len_u32(self.free_list.len()));
-        for i in &self.free_list {
-            h.u32(*i);
-        }
+fn feed_allocator<H: StateSink>(h: &mut H, free_list: &[u32]) {
+    h.u32(len_u32(free_list.len()));
+    for i in free_list {
+        h.u32(*i);
     }
 }
 

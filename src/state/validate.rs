@@ -11,8 +11,37 @@
 use crate::dynamics::{Body, BodyId, BodyKind, NO_ISLAND};
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2, WORLD_LIMIT};
-use crate::snapshot::SnapshotError;
 use crate::world::{MAX_SHAPE_SIZE, World};
+use core::fmt;
+
+/// The world described by a file breaks an invariant of the engine: the
+/// part of the state and what is wrong, in words.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InvalidState {
+    /// The part of the state (the names of [`StateDigest`](crate::hash::StateDigest)'s
+    /// parts, plus `"replay"` for a replay's own tables).
+    pub part: &'static str,
+    /// What is wrong, naming the body, contact or island.
+    pub detail: String,
+}
+
+impl fmt::Display for InvalidState {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.part, self.detail)
+    }
+}
+
+impl InvalidState {
+    /// The invariant of `part` that `detail` says is broken.
+    pub(crate) fn new(part: &'static str, detail: impl Into<String>) -> Self {
+        InvalidState {
+            part,
+            detail: detail.into(),
+        }
+    }
+}
+
+impl std::error::Error for InvalidState {}
 
 /// `true` if `v` is NaN (only the float reference scalars have one).
 fn is_nan<S: Scalar>(v: S) -> bool {
@@ -27,8 +56,8 @@ impl<S: Scalar> World<S> {
     /// Checks every invariant of the state.
     ///
     /// # Errors
-    /// [`SnapshotError::Invalid`] naming the part and what is wrong.
-    pub(crate) fn validate(&self) -> Result<(), SnapshotError> {
+    /// [`InvalidState`] naming the part and what is wrong.
+    pub(crate) fn validate(&self) -> Result<(), InvalidState> {
         // Exhaustive on purpose: a new field in `World` fails to compile here
         // until someone decides how to validate it.
         let World {
@@ -46,7 +75,7 @@ impl<S: Scalar> World<S> {
         } = self;
         settings
             .validate()
-            .map_err(|e| SnapshotError::invalid("world", e.to_string()))?;
+            .map_err(|e| InvalidState::new("world", e.to_string()))?;
         self.validate_bodies()?;
         self.validate_allocator()?;
         self.validate_contacts()?;
@@ -62,9 +91,9 @@ impl<S: Scalar> World<S> {
             .and_then(|s| s.body.as_ref())
     }
 
-    fn validate_bodies(&self) -> Result<(), SnapshotError> {
+    fn validate_bodies(&self) -> Result<(), InvalidState> {
         let bad =
-            |id: BodyId, what: &str| Err(SnapshotError::invalid("bodies", format!("{id}: {what}")));
+            |id: BodyId, what: &str| Err(InvalidState::new("bodies", format!("{id}: {what}")));
         let max_size = S::from_int(MAX_SHAPE_SIZE);
         let limit = S::from_int(WORLD_LIMIT);
         let bounds = self.settings.bounds;
@@ -152,8 +181,8 @@ impl<S: Scalar> World<S> {
         Ok(())
     }
 
-    fn validate_allocator(&self) -> Result<(), SnapshotError> {
-        let bad = |what: String| Err(SnapshotError::invalid("allocator", what));
+    fn validate_allocator(&self) -> Result<(), InvalidState> {
+        let bad = |what: String| Err(InvalidState::new("allocator", what));
         let mut listed = vec![false; self.slots.len()];
         for &index in &self.free_list {
             let Some(seen) = usize::try_from(index).ok().and_then(|i| listed.get_mut(i)) else {
@@ -177,11 +206,11 @@ impl<S: Scalar> World<S> {
         Ok(())
     }
 
-    fn validate_contacts(&self) -> Result<(), SnapshotError> {
+    fn validate_contacts(&self) -> Result<(), InvalidState> {
         let mut previous: Option<(u32, u32)> = None;
         for c in &self.contacts {
             let bad = |what: &str| {
-                Err(SnapshotError::invalid(
+                Err(InvalidState::new(
                     "contacts",
                     format!("contact ({}, {}): {what}", c.a, c.b),
                 ))
@@ -206,15 +235,11 @@ impl<S: Scalar> World<S> {
         Ok(())
     }
 
-    fn validate_sleep(&self) -> Result<(), SnapshotError> {
+    fn validate_sleep(&self) -> Result<(), InvalidState> {
         let mut members_total = 0usize;
         for (&key, members) in &self.sleeping_islands {
-            let bad = |what: String| {
-                Err(SnapshotError::invalid(
-                    "sleep",
-                    format!("island {key}: {what}"),
-                ))
-            };
+            let bad =
+                |what: String| Err(InvalidState::new("sleep", format!("island {key}: {what}")));
             if members.is_empty() {
                 return bad("has no members".to_owned());
             }
@@ -243,7 +268,7 @@ impl<S: Scalar> World<S> {
             .filter(|b| b.kind == BodyKind::Dynamic && !b.awake)
             .count();
         if sleepers != members_total {
-            return Err(SnapshotError::invalid(
+            return Err(InvalidState::new(
                 "sleep",
                 format!("{sleepers} sleeping bodies but {members_total} island members"),
             ));
@@ -251,8 +276,8 @@ impl<S: Scalar> World<S> {
         Ok(())
     }
 
-    fn validate_constraints(&self) -> Result<(), SnapshotError> {
-        let bad = |what: String| Err(SnapshotError::invalid("constraints", what));
+    fn validate_constraints(&self) -> Result<(), InvalidState> {
+        let bad = |what: String| Err(InvalidState::new("constraints", what));
         for (slot, index) in self.constraint_slots.iter().zip(0u32..) {
             let Some(entry) = &slot.entry else { continue };
             // The same checks `add_constraint` makes: live anchors, ranges.

@@ -2,6 +2,8 @@
 
 use core::fmt;
 
+pub use crate::state::validate::InvalidState;
+
 /// Which kind of clockwork2d file a byte string is (told apart by its
 /// magic bytes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -18,23 +20,6 @@ impl fmt::Display for FileKind {
             FileKind::Snapshot => "snapshot",
             FileKind::Replay => "replay",
         })
-    }
-}
-
-/// The world described by a file breaks an invariant of the engine: the
-/// part of the state and what is wrong, in words.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct InvalidState {
-    /// The part of the state (the names of [`crate::hash::StateDigest`]'s
-    /// parts, plus `"replay"` for a replay's own tables).
-    pub part: &'static str,
-    /// What is wrong, naming the body, contact or island.
-    pub detail: String,
-}
-
-impl fmt::Display for InvalidState {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.part, self.detail)
     }
 }
 
@@ -119,10 +104,13 @@ pub enum SnapshotError {
 impl SnapshotError {
     /// An [`SnapshotError::Invalid`] for `part`.
     pub(crate) fn invalid(part: &'static str, detail: impl Into<String>) -> Self {
-        SnapshotError::Invalid(InvalidState {
-            part,
-            detail: detail.into(),
-        })
+        SnapshotError::Invalid(InvalidState::new(part, detail))
+    }
+}
+
+impl From<InvalidState> for SnapshotError {
+    fn from(e: InvalidState) -> Self {
+        SnapshotError::Invalid(e)
     }
 }
 
