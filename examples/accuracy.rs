@@ -51,6 +51,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use clockwork2d::geometry::*;
 use clockwork2d::prelude::*;
 use clockwork2d_scene::builtin;
 use fixed::types::I48F16;
@@ -161,7 +162,7 @@ fn period(x: &[f64]) -> f64 {
 }
 
 fn projectile<S: Scalar>(iterations: u32, substeps: u32) -> (f64, f64) {
-    let mut world = World::<S>::new(settings(iterations, substeps));
+    let mut world = World::<S>::new_generic(settings(iterations, substeps));
     let (v0x, v0y, g) = (3.0, 12.0, -10.0);
     let id = world
         .add_body(
@@ -182,7 +183,7 @@ fn projectile<S: Scalar>(iterations: u32, substeps: u32) -> (f64, f64) {
 
 /// `(ns/step, period error, amplitude error)`, both relative.
 fn spring<S: Scalar>(iterations: u32, substeps: u32) -> (f64, f64, f64) {
-    let mut world = World::<S>::new(settings(iterations, substeps));
+    let mut world = World::<S>::new_generic(settings(iterations, substeps));
     let k = S::from_f64(4.0 * std::f64::consts::PI * std::f64::consts::PI);
     let id = world
         .add_body(
@@ -242,7 +243,7 @@ fn agm(mut a: f64, mut b: f64) -> f64 {
 
 /// `(ns/step, period error (relative), largest stretch (units))`.
 fn pendulum<S: Scalar>(iterations: u32, substeps: u32) -> (f64, f64, f64) {
-    let mut world = World::<S>::new(settings(iterations, substeps));
+    let mut world = World::<S>::new_generic(settings(iterations, substeps));
     let theta0 = 30f64.to_radians();
     let start = v::<S>(theta0.sin(), -theta0.cos());
     let id = world

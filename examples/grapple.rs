@@ -61,7 +61,7 @@ fn position(world: &World, id: BodyId) -> (f64, f64) {
 
 /// Runs the script; prints when `verbose`. Returns the final state hash.
 fn run(verbose: bool) -> Result<u64, WorldError> {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     walls(&mut world)?;
     let player = world.add_body(
         BodyDef::dynamic(Shape::circle(fx(0.3)))

@@ -33,7 +33,7 @@ fn main() -> Result<(), WorldError> {
         ..WorldSettings::default()
     };
     let g = -settings.gravity.y.to_f64();
-    let mut world: World = World::new(settings);
+    let mut world = World::new(settings);
 
     let angle = AMPLITUDE_DEG.to_radians();
     let bob = world.add_body(

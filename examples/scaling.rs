@@ -34,7 +34,7 @@ mod cpu_time;
 
 use std::time::Instant;
 
-use clockwork2d::World;
+use clockwork2d::prelude::World;
 use clockwork2d_scene::{Generator, Scene, SceneKind, SceneMaterial, SceneSettings, SceneShape};
 use cpu_time::thread_cpu_ns;
 

@@ -8,7 +8,7 @@
 
 use std::time::{Duration, Instant};
 
-use clockwork2d::World;
+use clockwork2d::prelude::World;
 use clockwork2d::replay::Recorder;
 use clockwork2d_scene::builtin;
 
@@ -40,15 +40,10 @@ fn size(label: &str, world: &World) {
     let bytes = world.snapshot().len();
     let bodies = world.body_count();
     let asleep = world.bodies().filter(|(_, b)| !b.is_awake()).count();
-    // For comparison: plain serde of the whole `World` with the same
-    // bincode configuration (what the compact payload replaces).
-    let plain =
-        bincode::serde::encode_to_vec(world, bincode::config::standard()).map_or(0, |v| v.len());
     println!(
-        "{label:<28} {bodies:>5} bodies ({asleep:>4} asleep/fixed), {:>5} touching pairs: {bytes:>7} bytes = {:>5.1} bytes/body (plain serde: {:>5.1})",
+        "{label:<28} {bodies:>5} bodies ({asleep:>4} asleep/fixed), {:>5} touching pairs: {bytes:>7} bytes = {:>5.1} bytes/body",
         world.touching_pairs().count(),
         bytes as f64 / bodies as f64,
-        plain as f64 / bodies as f64
     );
 }
 
@@ -64,7 +59,7 @@ fn main() {
     let bytes = big.snapshot();
     let encode = time(21, || big.snapshot());
     let restore = time(21, || {
-        World::<clockwork2d::Fx>::restore(&bytes).expect("restores")
+        World::<clockwork2d::prelude::Fx>::restore(&bytes).expect("restores")
     });
     let hash = time(21, || big.state_hash());
     let hash128 = time(21, || big.state_hash128());

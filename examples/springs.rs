@@ -17,7 +17,7 @@ fn v(x: f64, y: f64) -> Vec2 {
 }
 
 fn main() -> Result<(), WorldError> {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let ball = |world: &mut World, x: f64, y: f64| {
         world.add_body(
             BodyDef::dynamic(Shape::circle(fx(0.25)))

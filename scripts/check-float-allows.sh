@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# No float arithmetic on the simulation path (DESIGN.md, determinism rules).
+# No float arithmetic on the simulation path (ARCHITECTURE.md, "Determinism rules").
 #
 # The compiler enforces it: the library (src/lib.rs), the scene crate
 # (scene/src/lib.rs, which builds worlds) and the determinism suite
@@ -93,6 +93,6 @@ done < <(grep -rlE "$pattern" src scene/src determinism/src determinism/examples
 if ((status == 0)); then
   echo "check-float-allows: ok (clippy::float_arithmetic denied crate-wide; allowed only in the reference scalar impls and unit tests; cli/ and render/ are edge code)"
 else
-  echo "check-float-allows: the simulation path must stay free of f32/f64 arithmetic (see DESIGN.md); convert at the edge with fx()/to_f64() instead" >&2
+  echo "check-float-allows: the simulation path must stay free of f32/f64 arithmetic (see ARCHITECTURE.md); convert at the edge with fx()/to_f64() instead" >&2
 fi
 exit "$status"

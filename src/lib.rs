@@ -1,10 +1,13 @@
 //! # clockwork2d
 //!
 //! A deterministic 2D physics engine. Every number on the simulation path is
-//! fixed point ([`Fx`] = `I32F32` by default), so the same inputs give
+//! fixed point ([`Fx`](math::Fx) = `I32F32` by default), so the same inputs give
 //! bit-identical results on every machine, architecture and build profile.
+//! `use clockwork2d::prelude::*;` imports what a game uses; ARCHITECTURE.md
+//! in the repository describes the modules.
 //!
 //! ```
+//! use clockwork2d::geometry::contact_circle_circle;
 //! use clockwork2d::prelude::*;
 //! let a = Circle::new(Vec2::new(fx(0.0), fx(0.0)), fx(1.0));
 //! let b = Circle::new(Vec2::new(fx(1.5), fx(0.0)), fx(1.0));
@@ -27,22 +30,19 @@ pub mod world;
 
 pub use state::{diff, hash, snapshot};
 
-pub use constraints::{Anchor, Constraint, ConstraintId};
-pub use dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
-pub use math::{Fx, Scalar, Vec2, WideScalar, fx};
-pub use world::QueryIndex;
-pub use world::{
-    BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
-};
-
-/// Everything a typical user needs, in one import.
+/// What a game uses, in one import: the scalar and vectors, the world and
+/// its settings, bodies, shapes, constraints, commands, events, queries and
+/// the errors. Each item's home is its module (`clockwork2d::world::World`,
+/// ...); the geometry queries (`contact_*`, `ray_*`, `toi_*`) are in
+/// [`geometry`].
 pub mod prelude {
     pub use crate::constraints::{Anchor, Constraint, ConstraintId};
     pub use crate::dynamics::{Body, BodyDef, BodyId, BodyKind, MassSpec};
-    pub use crate::geometry::*;
-    pub use crate::math::{Fx, Scalar, Vec2, WORLD_LIMIT, WideScalar, fx};
-    pub use crate::world::QueryIndex;
+    pub use crate::geometry::{Aabb, Circle, Ray, RayHit, Shape};
+    pub use crate::math::{Fx, Scalar, Vec2, fx, vec2};
+    pub use crate::snapshot::SnapshotError;
     pub use crate::world::{
-        BodyRayHit, Command, CommandOutcome, Event, QueryFilter, World, WorldError, WorldSettings,
+        BodyRayHit, Command, CommandOutcome, Event, QueryFilter, QueryIndex, World, WorldError,
+        WorldSettings,
     };
 }

@@ -22,6 +22,8 @@
 //! property; the default would be 256).
 #![allow(clippy::float_arithmetic, clippy::cast_precision_loss)]
 
+use clockwork2d::geometry::*;
+use clockwork2d::math::WORLD_LIMIT;
 use clockwork2d::prelude::*;
 use fixed::types::I48F16;
 use proptest::prelude::*;

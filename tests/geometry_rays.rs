@@ -31,6 +31,8 @@
 //!   answer, so debug and release are checked to agree bit for bit.
 //! * The other scalars (`I48F16`, `f64`, `f32`) on the hand-computed cases.
 
+use clockwork2d::geometry::*;
+use clockwork2d::math::WORLD_LIMIT;
 use clockwork2d::prelude::*;
 use fixed::types::I48F16;
 use proptest::prelude::*;

@@ -28,6 +28,8 @@
 //!   answers where they are exact (so debug and release agree bit for bit).
 //! * The other scalars (`I48F16`, `f64`, `f32`) on hand-computed cases.
 
+use clockwork2d::geometry::*;
+use clockwork2d::math::WORLD_LIMIT;
 use clockwork2d::prelude::*;
 use fixed::types::I48F16;
 use proptest::prelude::*;

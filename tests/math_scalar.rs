@@ -19,7 +19,7 @@
 //! each property is a few integer operations, so this is cheap even in debug.
 
 use clockwork2d::math::WideFloat;
-use clockwork2d::{Fx, Scalar, WideScalar, fx};
+use clockwork2d::math::{Fx, Scalar, WideScalar, fx};
 use fixed::types::{I32F32, I48F16, I64F64, I96F32};
 use proptest::prelude::*;
 

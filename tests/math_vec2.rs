@@ -11,7 +11,7 @@
 //! default of 256.
 
 use clockwork2d::math::WORLD_LIMIT;
-use clockwork2d::{Fx, Scalar, Vec2, WideScalar, fx};
+use clockwork2d::math::{Fx, Scalar, Vec2, WideScalar, fx};
 use fixed::types::{I32F32, I48F16, I64F64, I96F32};
 use proptest::prelude::*;
 

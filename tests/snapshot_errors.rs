@@ -204,7 +204,7 @@ fn huge_table_lengths_are_refused_without_allocating() {
     // An empty world's payload ends with the empty tables (one zero byte
     // each). Claim 2^62 entries in each in turn: the bounded decoder must
     // refuse before reserving memory.
-    let empty: World = World::new(WorldSettings::default());
+    let empty = World::new(WorldSettings::default());
     let bytes = empty.snapshot();
     let end = bytes.len() - 8;
     let mut refused = 0;

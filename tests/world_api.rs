@@ -16,7 +16,7 @@ use proptest::prelude::*;
 
 /// A world with some history: ground, a settling 3-box stack, a ball.
 fn busy_world() -> World {
-    let mut w: World = World::new(WorldSettings::default());
+    let mut w = World::new(WorldSettings::default());
     add_ground(&mut w);
     add_stack(&mut w, 3, 0.05);
     w.add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(v(3.0, 2.0)))
@@ -153,7 +153,7 @@ fn positions_at_the_bounds_are_accepted_and_just_beyond_refused() {
         bounds: Aabb::new(v(0.0, 0.0), v(100.0, 50.0)),
         ..WorldSettings::default()
     };
-    let mut world: World = World::new(settings);
+    let mut world = World::new(settings);
     let def = |x, y| BodyDef::fixed(Shape::circle(fx(0.5))).position(v(x, y));
     assert!(
         world.add_body(def(100.0, -50.0)).is_ok(),
@@ -485,7 +485,7 @@ fn events_come_in_the_documented_order() {
         bounds: Aabb::new(v(0.0, 10.0), v(20.0, 20.0)),
         ..WorldSettings::default()
     };
-    let mut world: World = World::new(settings);
+    let mut world = World::new(settings);
     add_ground(&mut world);
     // Two stacks that settle and sleep, a bouncing ball that begins and
     // ends contacts, and later a ball that wakes a stack and a body shot out
@@ -553,7 +553,7 @@ fn queries_never_mutate_and_sort_as_documented() {
         gravity: Vec2::ZERO,
         ..WorldSettings::default()
     };
-    let mut world: World = World::new(settings);
+    let mut world = World::new(settings);
     // Ids in order of creation: b before a, two boxes whose near faces are
     // both exactly at x = 4.5, so a tie on distance must go to b (smaller
     // id). They overlap, but a kinematic and a fixed body do not interact.

@@ -248,7 +248,7 @@ fn def<S: Scalar>(spec: &BodySpec) -> BodyDef<S> {
 
 /// Builds the world; returns it with every id ever issued.
 fn build_world<S: Scalar>(spec: &WorldSpec) -> (World<S>, Vec<BodyId>) {
-    let mut world = World::new(WorldSettings::default());
+    let mut world = World::new_generic(WorldSettings::default());
     let mut ids = Vec::new();
     for b in &spec.bodies {
         if let Ok(id) = world.add_body(def(b)) {
@@ -539,7 +539,7 @@ fn assert_same(world: &World, origin: Vec2, dir: Vec2, dist: Fx, filter: &QueryF
 
 #[test]
 fn empty_world_answers_nothing() {
-    let world: World = World::new(WorldSettings::default());
+    let world = World::new(WorldSettings::default());
     let index = world.query_index();
     let all = QueryFilter::default();
     assert_eq!(index.raycast(Vec2::ZERO, Vec2::X, Fx::MAX), None);
@@ -555,7 +555,7 @@ fn empty_world_answers_nothing() {
 
 #[test]
 fn exact_ties_go_to_the_smaller_id_whatever_the_tree_order() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     // Fill slots 0..8, free slot 2, and reuse it: the re-added body has the
     // smaller index (and a later generation) than the others at its place.
     let mut ids: Vec<BodyId> = (0..8)
@@ -600,7 +600,7 @@ fn exact_ties_go_to_the_smaller_id_whatever_the_tree_order() {
 
 #[test]
 fn origin_inside_grazing_rays_and_corners_agree() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let a = square(&mut world, BodyKind::Fixed, v(0.0, 0.0));
     let _b = square(&mut world, BodyKind::Kinematic, v(1.0, 0.0)); // shares an edge
     let c = world
@@ -641,7 +641,7 @@ fn origin_inside_grazing_rays_and_corners_agree() {
 
 #[test]
 fn far_origins_zero_directions_and_bad_distances_agree() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     square(&mut world, BodyKind::Fixed, v(0.0, 0.0));
     world
         .add_body(BodyDef::dynamic(Shape::circle(fx(2.0))).position(v(10.0, 0.0)))
@@ -668,7 +668,7 @@ fn far_origins_zero_directions_and_bad_distances_agree() {
 
 #[test]
 fn filters_agree() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let kinds = [BodyKind::Fixed, BodyKind::Kinematic, BodyKind::Dynamic];
     let mut ids = Vec::new();
     for i in 0..30 {

@@ -76,7 +76,7 @@ fn velocity_table() -> Vec<Vec2> {
 #[test]
 fn thousand_circles_in_a_shaking_box_stay_inside() {
     let ticks: usize = 3600;
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
 
     let (hx, hy) = INNER_HALF;
     let (cx, cy) = INNER_CENTRE;

@@ -56,7 +56,7 @@ fn step_recording_sleep(world: &mut World, ids: &[BodyId], slept_at: &mut [Optio
 
 #[test]
 fn stack_of_ten_rests_at_ideal_height_without_drift_and_sleeps_before_4s() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     add_ground(&mut world);
     // Boxes start 0.05 apart (and 0 above the ground for the bottom one)
     // so the stack has to land and settle, not just start at rest.
@@ -115,7 +115,7 @@ fn stack_of_ten_rests_at_ideal_height_without_drift_and_sleeps_before_4s() {
 
 #[test]
 fn pyramid_of_twenty_rows_keeps_its_top_and_sleeps() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     add_ground(&mut world);
     let rows = 20;
     let boxes = add_pyramid(&mut world, rows, 1.05);
@@ -180,7 +180,7 @@ fn penetrations(world: &World, light: BodyId, heavy: BodyId) -> (f64, f64) {
 /// 3 iterations, up to 0.2 each) then removes. 0.01 is ~3.5× that.
 /// "At rest": both asleep, or both slower than the sleep threshold 0.05.
 fn mass_ratio_case(gap: f64) {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     add_ground(&mut world);
     let light = world
         .add_body(

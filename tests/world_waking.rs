@@ -13,7 +13,7 @@ use common::{add_ground, add_stack, v, y_of};
 /// Builds a 5-box stack (starting 0.05 apart) and steps until every box
 /// sleeps (at most 240 ticks).
 fn sleeping_stack() -> (World, Vec<BodyId>) {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     add_ground(&mut world);
     let ids = add_stack(&mut world, 5, 0.05);
     for _ in 0..240 {

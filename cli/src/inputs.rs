@@ -178,7 +178,7 @@ pub fn parse_inputs<S: Scalar>(text: &str) -> Result<TickInputs<S>, InputError> 
 
 #[cfg(test)]
 mod tests {
-    use clockwork2d::Fx;
+    use clockwork2d::prelude::Fx;
 
     use super::parse_inputs;
 

@@ -35,9 +35,9 @@ use std::time::{Duration, Instant};
 use clap::{Parser, Subcommand};
 use clockwork2d::diff::diff_worlds;
 use clockwork2d::dynamics::BodyKind;
+use clockwork2d::prelude::{Command, Fx, Scalar, World};
 use clockwork2d::replay::{MAX_CHECKPOINTS, MAX_REPLAY_TICKS, Recorder, Replay};
 use clockwork2d::snapshot::{FileHeader, FileKind, SnapshotError};
-use clockwork2d::{Command, Fx, Scalar, World};
 use clockwork2d_scene::{
     BUILTIN_SCENES, DEFAULT_SCENE, Scene, SceneError, builtin, scripted_commands,
 };

@@ -6,7 +6,7 @@ use std::io::IsTerminal;
 use std::path::Path;
 use std::process::ExitCode;
 
-use clockwork2d::World;
+use clockwork2d::prelude::World;
 use clockwork2d_render::{RenderError, RenderOptions, render_run};
 use clockwork2d_scene::SceneError;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};

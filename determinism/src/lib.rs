@@ -6,7 +6,7 @@
 //! Each [`Scenario`] builds a world (from a built-in scene or from code),
 //! then plays a script for [`TICKS`] ticks: commands applied mid-run, ray
 //! casts and queries. Every [`CHECKPOINT_EVERY`] ticks (and at tick 0) it
-//! records a [`Checkpoint`]: the world's [`state_hash`](clockwork2d::World::state_hash)
+//! records a [`Checkpoint`]: the world's [`state_hash`](clockwork2d::prelude::World::state_hash)
 //! and the digest of a [`Probe`] that folds everything observed besides the
 //! state (ray-cast answers with their distance, point and normal bits,
 //! query results, every command's outcome or refusal, every event).
@@ -182,7 +182,10 @@ pub(crate) struct Observer<'a> {
 
 impl Observer<'_> {
     /// Folds a ray answer and counts it.
-    pub(crate) fn ray(&mut self, hit: Option<&clockwork2d::world::BodyRayHit<clockwork2d::Fx>>) {
+    pub(crate) fn ray(
+        &mut self,
+        hit: Option<&clockwork2d::world::BodyRayHit<clockwork2d::prelude::Fx>>,
+    ) {
         if hit.is_some() {
             self.coverage.ray_hits += 1;
         } else {
@@ -583,7 +586,7 @@ pub fn verify_files(
             "the replay's recorded hashes differ from the goldens (recorded {recorded:x?}, golden {expected:x?})"
         ));
     }
-    let mut world = match World::<clockwork2d::Fx>::restore(snapshot_bytes) {
+    let mut world = match World::<clockwork2d::prelude::Fx>::restore(snapshot_bytes) {
         Ok(w) => w,
         Err(e) => return fail(format!("snapshot refused: {e}")),
     };

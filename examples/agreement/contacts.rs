@@ -13,6 +13,7 @@
 //! Each row reports one output; for vectors (points, normals) the error of a
 //! case is the larger of the two component errors.
 
+use clockwork2d::geometry::*;
 use clockwork2d::prelude::*;
 
 use super::rng::Rng;

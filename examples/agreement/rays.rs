@@ -21,7 +21,8 @@
 //! touching distance to a quarter of the world), sizes up to 64 units,
 //! motions mostly aimed at the target with a sideways jitter.
 
-use clockwork2d::Fx;
+use clockwork2d::geometry::*;
+use clockwork2d::prelude::Fx;
 use clockwork2d::prelude::*;
 
 use super::rng::Rng;

@@ -11,8 +11,8 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
+use clockwork2d::prelude::{Fx, World};
 use clockwork2d::replay::Recorder;
-use clockwork2d::{Fx, World};
 use clockwork2d_scene::{BUILTIN_SCENES, builtin, scripted_commands};
 
 /// Ticks of the mid-simulation snapshot and of the short replays.

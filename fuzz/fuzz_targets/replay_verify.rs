@@ -14,8 +14,8 @@
 //! length and checksum), so mutations reach the payload decoder.
 #![no_main]
 
+use clockwork2d::prelude::{Fx, World};
 use clockwork2d::replay::Replay;
-use clockwork2d::{Fx, World};
 use clockwork2d_fuzz::frame::{Kind, repaired};
 use libfuzzer_sys::fuzz_target;
 

@@ -11,7 +11,7 @@
 //! checksum repaired (payload decoding and validation).
 #![no_main]
 
-use clockwork2d::{Fx, World};
+use clockwork2d::prelude::{Fx, World};
 use clockwork2d_fuzz::frame::{Kind, repaired};
 use clockwork2d_fuzz::roundtrip::assert_roundtrip;
 use libfuzzer_sys::fuzz_target;

@@ -3,7 +3,7 @@
 //! extremes of the type, and small "physical" values.
 
 use arbitrary::{Arbitrary, Unstructured};
-use clockwork2d::{Fx, Vec2};
+use clockwork2d::prelude::{Fx, Vec2};
 
 /// Raw bits of one `Fx` ulp (2⁻³²).
 const ULP: i64 = 1;

@@ -1,7 +1,7 @@
 //! The snapshot round-trip invariant (promise 2 of the design: snapshots
 //! are complete).
 
-use clockwork2d::{Fx, World};
+use clockwork2d::prelude::{Fx, World};
 
 /// Checks that `world`'s snapshot restores, that the restored world has the
 /// same state hash (64- and 128-bit) and writes the same bytes, and returns

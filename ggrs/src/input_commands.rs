@@ -1,7 +1,7 @@
 //! [`InputCommands`]: how a game turns one player's input into world
 //! commands.
 
-use clockwork2d::{Command, Fx, Scalar, World};
+use clockwork2d::prelude::{Command, Fx, Scalar, World};
 use ggrs::{InputStatus, PlayerHandle};
 
 /// Turns the input of one player on one frame into [`Command`]s.

@@ -1,8 +1,8 @@
 //! [`RollbackState`]: what the glue hands GGRS to keep for a frame, and how
 //! it comes back.
 
+use clockwork2d::prelude::{Fx, Scalar, World};
 use clockwork2d::snapshot::SnapshotError;
-use clockwork2d::{Fx, Scalar, World};
 
 /// A saved copy of a world that GGRS keeps in its state cells.
 ///

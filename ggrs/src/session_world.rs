@@ -3,8 +3,8 @@
 
 use std::collections::BTreeMap;
 
+use clockwork2d::prelude::{Command, Fx, Scalar, World, WorldError};
 use clockwork2d::replay::{Recorder, Replay};
-use clockwork2d::{Command, Fx, Scalar, World, WorldError};
 use ggrs::{Config, Frame, GgrsRequest, PlayerHandle};
 
 use crate::error::SessionError;

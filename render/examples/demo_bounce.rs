@@ -26,7 +26,7 @@ const HEIGHT: f64 = 5.0;
 
 fn main() -> Result<(), RenderError> {
     let err = |e: WorldError| RenderError::Encode(e.to_string());
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     world
         .add_body(BodyDef::fixed(Shape::aabb(v(6.0, 0.5))).position(v(0.0, -0.5)))
         .map_err(err)?;

@@ -98,7 +98,7 @@ fn walls(world: &mut World) -> Result<(), WorldError> {
 
 fn main() -> Result<(), RenderError> {
     let err = |e: WorldError| RenderError::Encode(e.to_string());
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     walls(&mut world).map_err(err)?;
     let player = world
         .add_body(

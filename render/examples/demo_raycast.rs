@@ -30,7 +30,7 @@ const RANGE: f64 = 14.0;
 
 fn main() -> Result<(), RenderError> {
     let err = |e: WorldError| RenderError::Encode(e.to_string());
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let fixed = |world: &mut World, shape: Shape, x: f64, y: f64| {
         world.add_body(BodyDef::fixed(shape).position(v(x, y)))
     };

@@ -27,7 +27,7 @@ const EVERY: u64 = 3;
 
 fn main() -> Result<(), RenderError> {
     let err = |e: WorldError| RenderError::Encode(e.to_string());
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let mut balls = Vec::new();
     for (hook_x, restitution) in [(-3.5, 0.0), (3.5, 1.0)] {
         let hook = v(hook_x, 5.0);

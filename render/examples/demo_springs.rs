@@ -29,7 +29,7 @@ fn main() -> Result<(), RenderError> {
     let err = |e: WorldError| RenderError::Encode(e.to_string());
     // Gravity only shifts the bendy spring's rest point down by
     // m·g/k_y = 0.25, so both demos share one world with default gravity.
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let anchor = v(-4.0, 3.0);
     let block = world
         .add_body(

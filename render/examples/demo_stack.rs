@@ -21,7 +21,7 @@ const EVERY: u64 = 3;
 const THROW_AT: u64 = 240;
 
 fn main() -> Result<(), RenderError> {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let err = |e: WorldError| RenderError::Encode(e.to_string());
     world
         .add_body(BodyDef::fixed(Shape::aabb(v(9.0, 0.5))).position(v(0.0, -0.5)))

@@ -1,7 +1,7 @@
 //! How a body is drawn: its shape, filled in the colour of its state.
 
 use clockwork2d::geometry::Shape;
-use clockwork2d::{Body, BodyKind, Scalar};
+use clockwork2d::prelude::{Body, BodyKind, Scalar};
 
 use crate::{Canvas, Colour};
 

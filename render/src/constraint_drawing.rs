@@ -1,7 +1,7 @@
 //! How constraints are drawn: springs as coils, ropes as lines (straight
 //! when taut, sagging when slack).
 
-use clockwork2d::{Anchor, Constraint, Scalar, World};
+use clockwork2d::prelude::{Anchor, Constraint, Scalar, World};
 
 use crate::{Canvas, Colour};
 

@@ -1,6 +1,6 @@
 //! How a contact is drawn: the two closest points and the normal.
 
-use clockwork2d::Scalar;
+use clockwork2d::prelude::Scalar;
 
 use crate::{Canvas, Colour, ContactPoints};
 

@@ -1,12 +1,12 @@
 //! [`ContactPoints`]: the engine's contact between two placed shapes, plus
 //! the closest points on each surface, for drawing.
 
-use clockwork2d::Scalar;
 use clockwork2d::geometry::{
     Aabb, Circle, Contact, Shape, contact_aabb_aabb, contact_aabb_circle, contact_circle_aabb,
     contact_circle_circle,
 };
 use clockwork2d::math::Vec2;
+use clockwork2d::prelude::Scalar;
 
 /// A contact as the engine computes it, and where it touches each shape.
 ///

@@ -14,7 +14,7 @@
 //! use clockwork2d::prelude::*;
 //! use clockwork2d_render::{Canvas, Colour, Layers, draw_world, view_of_world};
 //!
-//! let mut world: World = World::new(WorldSettings::default());
+//! let mut world = World::new(WorldSettings::default());
 //! world.add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(4.0), fx(0.5))))).unwrap();
 //! let ball = world
 //!     .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(Vec2::new(fx(0.0), fx(2.0))))

@@ -1,8 +1,8 @@
 //! How a ray cast is drawn: the ray up to its hit, the hit point and the
 //! surface normal there.
 
-use clockwork2d::Scalar;
 use clockwork2d::geometry::{Ray, RayHit};
+use clockwork2d::prelude::Scalar;
 
 use crate::{Canvas, Colour};
 

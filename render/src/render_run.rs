@@ -4,7 +4,7 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-use clockwork2d::{Scalar, World};
+use clockwork2d::prelude::{Scalar, World};
 
 use crate::{
     Canvas, GifRecorder, Layers, OutputFormat, RenderError, draw_world, view_of_world, write_png,

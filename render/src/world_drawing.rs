@@ -1,6 +1,6 @@
 //! How a whole world is drawn, and the view that fits it.
 
-use clockwork2d::{Scalar, World};
+use clockwork2d::prelude::{Scalar, World};
 
 use crate::{Canvas, RenderError, View, contact_points, draw_body, draw_constraint, draw_contact};
 
@@ -53,7 +53,7 @@ pub fn draw_world<S: Scalar>(canvas: &mut Canvas, world: &World<S>, layers: &Lay
                 // Markers larger than the bodies would bury a dense scene
                 // (a pyramid seen whole): skip pairs with a body under
                 // 4 pixels in half-size on screen.
-                let smallest = |body: &clockwork2d::Body<S>| {
+                let smallest = |body: &clockwork2d::prelude::Body<S>| {
                     let (hx, hy) = body.shape().half_extents().to_f64();
                     hx.min(hy) * canvas.view().scale
                 };

@@ -2,6 +2,7 @@
 //! at its pixels, background around it, a sleeping body in its own colour,
 //! contact points on both surfaces.
 
+use clockwork2d::geometry::*;
 use clockwork2d::prelude::*;
 use clockwork2d_render::{
     Canvas, Colour, Layers, View, body_colour, contact_points, draw_contact, draw_ray, draw_world,
@@ -38,7 +39,7 @@ fn view_maps_world_to_pixels_with_y_up_and_back() {
 
 #[test]
 fn a_body_is_drawn_at_its_place_and_nowhere_else() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let ball = world
         .add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(v(3.0, 1.0)))
         .unwrap();
@@ -78,7 +79,7 @@ fn a_body_is_drawn_at_its_place_and_nowhere_else() {
 
 #[test]
 fn a_sleeping_body_is_drawn_differently_from_an_awake_one() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     world
         .add_body(BodyDef::fixed(Shape::aabb(v(5.0, 0.5))).position(v(0.0, -0.5)))
         .unwrap();
@@ -184,7 +185,7 @@ fn contacts_and_rays_are_drawn_where_they_are() {
 
 #[test]
 fn springs_and_ropes_are_drawn_between_their_anchors() {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let ball = world
         .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(0.0, -2.0)))
         .unwrap();
@@ -206,7 +207,7 @@ fn springs_and_ropes_are_drawn_between_their_anchors() {
     assert_eq!(canvas.colour_at_world((0.0, 0.5)), Some(Colour::RopeTaut));
     // Slack (length 8): it sags below the chord, so the chord's midpoint
     // is empty... unless the sag is vertical. Use a horizontal chord.
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let ball = world
         .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(4.0, 0.0)))
         .unwrap();
@@ -227,7 +228,7 @@ fn springs_and_ropes_are_drawn_between_their_anchors() {
     );
     // A radial spring is a coil along the pole: spring-coloured pixels near
     // the pole's middle.
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     let ball = world
         .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(4.0, 0.0)))
         .unwrap();
@@ -265,7 +266,7 @@ fn bad_sizes_are_refused_with_a_typed_error() {
             "{err}"
         );
     }
-    let empty: World = World::new(WorldSettings::default());
+    let empty = World::new(WorldSettings::default());
     assert!(matches!(
         view_of_world(&empty, 10, 10),
         Err(clockwork2d_render::RenderError::EmptyWorld)
@@ -275,7 +276,7 @@ fn bad_sizes_are_refused_with_a_typed_error() {
 #[test]
 fn contacts_are_drawn_between_visible_bodies_only() {
     // Two unit boxes resting on each other, after a step (so they touch).
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     world
         .add_body(BodyDef::fixed(Shape::aabb(v(5.0, 0.5))).position(v(0.0, -0.5)))
         .unwrap();

@@ -22,7 +22,7 @@ fn scratch(name: &str) -> PathBuf {
 /// Ground and a ball falling from rest at height 3 (it lands after about
 /// √(2·2.5/10) ≈ 0.7 s = 42 ticks, so it moves in every early frame).
 fn falling_ball() -> (World, BodyId) {
-    let mut world: World = World::new(WorldSettings::default());
+    let mut world = World::new(WorldSettings::default());
     world
         .add_body(BodyDef::fixed(Shape::aabb(v(3.0, 0.5))).position(v(0.0, -0.5)))
         .unwrap();
@@ -135,7 +135,7 @@ fn bad_requests_are_refused_before_anything_is_done() {
         }
         assert!(!path.exists(), "{name} was written");
     }
-    let mut empty: World = World::new(WorldSettings::default());
+    let mut empty = World::new(WorldSettings::default());
     let path = scratch("empty.gif");
     let err = render_run(&mut empty, &RenderOptions::default(), &path, |_| {}).unwrap_err();
     assert!(matches!(err, RenderError::EmptyWorld), "{err}");

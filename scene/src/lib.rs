@@ -1,6 +1,6 @@
 //! Scenes for clockwork2d: a RON description of settings and bodies, with
 //! generators for the usual arrangements (stacks, pyramids, grids, walls),
-//! the built-in scenes, building a [`World`](clockwork2d::World) from a
+//! the built-in scenes, building a [`World`](clockwork2d::prelude::World) from a
 //! scene, and the seeded scripted input ([`scripted_commands`]) that the
 //! golden replays and the determinism suite are made of.
 //!
@@ -49,7 +49,7 @@ pub const MAX_SCENE_BODIES: u64 = 1 << 20;
 pub struct Scene {
     /// A short name.
     pub name: String,
-    /// Overrides of the default [`WorldSettings`](clockwork2d::WorldSettings).
+    /// Overrides of the default [`WorldSettings`](clockwork2d::prelude::WorldSettings).
     #[serde(default)]
     pub settings: SceneSettings,
     /// Individual bodies.
@@ -75,7 +75,7 @@ pub enum SceneAnchor {
     BodyOffset(u32, (f64, f64)),
 }
 
-/// A constraint in a scene file (see [`clockwork2d::Constraint`]).
+/// A constraint in a scene file (see [`clockwork2d::prelude::Constraint`]).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum SceneConstraint {
     /// A bendy spring pulling `b` toward `a + rest_offset`.

@@ -449,8 +449,9 @@ fn scene_proxies_match_the_original() {
     use crate::dynamics::BodyDef;
     use crate::geometry::Shape;
     use crate::math::Vec2;
-    let v = |x: f64, y: f64| Vec2::new(crate::fx(x), crate::fx(y));
-    let mut world: crate::World<Fx> = crate::World::new(crate::WorldSettings::default());
+    let v = |x: f64, y: f64| Vec2::new(crate::math::fx(x), crate::math::fx(y));
+    let mut world: crate::world::World<Fx> =
+        crate::world::World::new(crate::world::WorldSettings::default());
     for (centre, half) in [
         (v(0.0, -0.5), v(41.0, 1.0)),
         (v(0.0, 40.5), v(41.0, 1.0)),
@@ -480,7 +481,7 @@ fn scene_proxies_match_the_original() {
             let velocity = Vec2::new(speed(), speed());
             world
                 .add_body(
-                    BodyDef::dynamic(Shape::circle(crate::fx(0.25)))
+                    BodyDef::dynamic(Shape::circle(crate::math::fx(0.25)))
                         .position(position)
                         .velocity(velocity),
                 )

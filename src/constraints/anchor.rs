@@ -2,8 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::Fx;
 use crate::dynamics::BodyId;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// One end of a constraint: a fixed point in the world, a body's centre,

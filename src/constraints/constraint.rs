@@ -3,14 +3,14 @@
 use serde::{Deserialize, Serialize};
 
 use super::Anchor;
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// A constraint between two anchors.
 ///
 /// ```
 /// use clockwork2d::prelude::*;
-/// let mut world: World = World::new(WorldSettings::default());
+/// let mut world = World::new(WorldSettings::default());
 /// let ball = world.add_body(BodyDef::dynamic(Shape::circle(fx(0.25)))
 ///     .position(Vec2::new(fx(0.0), fx(4.0)))).unwrap();
 /// let rope = world.add_constraint(Constraint::rope(

@@ -3,7 +3,7 @@
 use serde::{Deserialize, Serialize};
 
 /// A handle to a constraint: slot index plus generation, like
-/// [`crate::BodyId`]. Removing a constraint bumps its slot's generation so
+/// [`crate::dynamics::BodyId`]. Removing a constraint bumps its slot's generation so
 /// old handles are detected as stale.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash, Serialize, Deserialize)]
 pub struct ConstraintId {

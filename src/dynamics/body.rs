@@ -2,8 +2,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::Fx;
 use crate::geometry::{Aabb, Shape};
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// The island key of a body that is not asleep.
@@ -157,8 +157,8 @@ impl<S: Scalar> BodyDef<S> {
     }
 }
 
-/// A body in the world. Read it with [`crate::World::body`]; change it with
-/// [`crate::Command`]s.
+/// A body in the world. Read it with [`crate::world::World::body`]; change it with
+/// [`crate::world::Command`]s.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct Body<S: Scalar = Fx> {

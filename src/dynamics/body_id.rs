@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 ///
 /// ```
 /// use clockwork2d::prelude::*;
-/// let mut world: World = World::new(WorldSettings::default());
+/// let mut world = World::new(WorldSettings::default());
 /// let a = world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
 /// world.remove_body(a).unwrap();
 /// let b = world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();

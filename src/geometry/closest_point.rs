@@ -66,7 +66,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2, WideScalar};
 
 /// The point of a segment nearest to a query point, with its parameter.
@@ -98,6 +98,8 @@ pub struct SegmentPoint<S: Scalar = Fx> {
 /// defined (saturated) result with `t` in `[0, 1]`.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
+/// use clockwork2d::math::*;
 /// use clockwork2d::prelude::*;
 /// let a = Vec2::new(fx(0.0), fx(0.0));
 /// let b = Vec2::new(fx(4.0), fx(0.0));

@@ -2,12 +2,13 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// The contact between two shapes `a` and `b`.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let a = Circle::new(Vec2::new(fx(0.0), fx(0.0)), fx(1.0));
 /// let b = Circle::new(Vec2::new(fx(3.0), fx(0.0)), fx(1.0));

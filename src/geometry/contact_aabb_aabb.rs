@@ -69,6 +69,7 @@ use crate::math::{Scalar, Vec2};
 /// offset on the chosen axis gives the positive axis.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let a = Aabb::new(Vec2::new(fx(0.0), fx(0.0)), Vec2::new(fx(2.0), fx(1.0)));
 /// // Resting on top of `a`, sunk in by 0.25.

@@ -56,6 +56,8 @@ use crate::math::{Scalar, Vec2};
 /// the module notes in `src/geometry/contact_circle_aabb.rs` for the derivation, accuracy and degenerate cases.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
+/// use clockwork2d::math::*;
 /// use clockwork2d::prelude::*;
 /// let ground = Aabb::new(Vec2::new(fx(0.0), fx(0.0)), Vec2::new(fx(10.0), fx(1.0)));
 /// // A ball of radius 0.5 whose centre is 1.25 above the box: a gap of 0.75 ...
@@ -107,6 +109,8 @@ pub fn contact_circle_aabb<S: Scalar>(a: &Circle<S>, b: &Aabb<S>) -> Contact<S> 
 /// box goes down, the circle up, as with [`contact_circle_aabb`]).
 ///
 /// ```
+/// use clockwork2d::geometry::*;
+/// use clockwork2d::math::*;
 /// use clockwork2d::prelude::*;
 /// let ground = Aabb::new(Vec2::new(fx(0.0), fx(0.0)), Vec2::new(fx(10.0), fx(1.0)));
 /// let ball = Circle::new(Vec2::new(fx(3.0), fx(0.75)), fx(0.5));

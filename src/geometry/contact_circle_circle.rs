@@ -40,6 +40,8 @@ use crate::math::{Scalar, Vec2};
 /// `ulp·(1 + 1/distance)` per component; see the module notes in `src/geometry/contact_circle_circle.rs`.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
+/// use clockwork2d::math::*;
 /// use clockwork2d::prelude::*;
 /// let a = Circle::new(Vec2::new(fx(0.0), fx(0.0)), fx(1.0));
 /// let b = Circle::new(Vec2::new(fx(3.0), fx(4.0)), fx(2.0));

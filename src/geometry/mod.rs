@@ -1,5 +1,5 @@
 //! Geometry: shapes, closest points, contact tests, ray casts and time of
-//! impact. All generic over the [`Scalar`](crate::Scalar).
+//! impact. All generic over the [`Scalar`](crate::math::Scalar).
 //!
 //! Conventions used by every function here:
 //!

@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::segment_cast::Cast;
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2, WideScalar};
 
 /// A ray: an origin, a unit direction and a maximum distance.
@@ -36,6 +36,8 @@ use crate::math::{Scalar, Vec2, WideScalar};
 /// [`WORLD_LIMIT`]: crate::math::WORLD_LIMIT
 ///
 /// ```
+/// use clockwork2d::geometry::*;
+/// use clockwork2d::math::*;
 /// use clockwork2d::prelude::*;
 /// let ray = Ray::new(Vec2::new(fx(0.0), fx(0.0)), Vec2::new(fx(3.0), fx(0.0)), fx(10.0)).unwrap();
 /// assert_eq!(ray.direction, Vec2::new(fx(1.0), fx(0.0)));
@@ -147,6 +149,8 @@ fn unit_of_max_normed<S: Scalar>(w: Vec2<S>) -> Option<Vec2<S>> {
 /// Where a ray hits a shape.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
+/// use clockwork2d::math::*;
 /// use clockwork2d::prelude::*;
 /// let ray = Ray::new(Vec2::new(fx(-5.0), fx(0.0)), Vec2::X, fx(100.0)).unwrap();
 /// let hit = ray_circle(&ray, &Circle::new(Vec2::ZERO, fx(1.0))).unwrap();

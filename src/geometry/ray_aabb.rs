@@ -61,6 +61,7 @@ use crate::math::Scalar;
 /// truncated to an ulp, and the point lies exactly on the entered face.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let b = Aabb::new(Vec2::new(fx(5.0), fx(0.0)), Vec2::new(fx(1.0), fx(2.0)));
 /// let ray = Ray::new(Vec2::ZERO, Vec2::X, fx(10.0)).unwrap();

@@ -52,6 +52,7 @@ use crate::math::Scalar;
 ///   way round; a miss passes at least `r − 3 ulps` from the centre.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let circle = Circle::new(Vec2::new(fx(5.0), fx(0.0)), fx(1.0));
 /// let ray = Ray::new(Vec2::ZERO, Vec2::new(fx(1.0), fx(0.0)), fx(10.0)).unwrap();
@@ -97,6 +98,7 @@ pub fn ray_circle<S: Scalar>(ray: &Ray<S>, circle: &Circle<S>) -> Option<RayHit<
 /// point), for far circles too.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let circle = Circle::new(Vec2::new(fx(5.0), fx(0.0)), fx(1.0));
 /// let ray = Ray::new(Vec2::ZERO, Vec2::X, fx(1.0)).unwrap();

@@ -5,7 +5,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// A circle: centre and radius.

@@ -31,7 +31,7 @@
 
 use super::segment_cast::{Cast, cast_box, cast_circle, cast_rounded_box};
 use super::{Aabb, Circle};
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// The outcome of a time-of-impact query.
@@ -76,6 +76,7 @@ use crate::math::{Scalar, Vec2};
 /// casts), but the contact position stays within that bound.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let a = Circle::new(Vec2::ZERO, fx(1.0));
 /// let b = Circle::new(Vec2::new(fx(10.0), fx(0.0)), fx(1.0));
@@ -137,6 +138,7 @@ fn toi_from_cast<S: Scalar>(d: Vec2<S>, cast: impl FnOnce(Vec2<S>, S) -> Cast<S>
 /// outcomes and the accuracy on [`Toi`].
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let a = Circle::new(Vec2::ZERO, fx(1.0));
 /// let b = Circle::new(Vec2::new(fx(5.0), fx(0.0)), fx(1.0));
@@ -172,6 +174,7 @@ pub fn toi_circle_circle<S: Scalar>(
 /// instant), it is the **y** axis. See [`Toi`].
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let a = Aabb::new(Vec2::ZERO, Vec2::new(fx(1.0), fx(1.0)));
 /// let b = Aabb::new(Vec2::new(fx(0.0), fx(-5.0)), Vec2::new(fx(2.0), fx(1.0)));
@@ -198,6 +201,7 @@ pub fn toi_aabb_aabb<S: Scalar>(a: &Aabb<S>, da: Vec2<S>, b: &Aabb<S>, db: Vec2<
 /// the normal. See [`Toi`].
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
 /// let b = Aabb::new(Vec2::ZERO, Vec2::new(fx(1.0), fx(1.0)));
 /// // A circle of radius 1 moving left onto the box's right face.

@@ -6,6 +6,7 @@
 
 use fixed::types::{I32F32, I48F16, I64F64, I96F32};
 
+use super::Vec2;
 use super::scalar::Scalar;
 
 /// The default scalar: 32 integer bits, 32 fraction bits.
@@ -26,6 +27,18 @@ pub type Fx = I32F32;
 #[must_use]
 pub fn fx(value: f64) -> Fx {
     Fx::from_f64(value)
+}
+
+/// A [`Vec2`] of [`Fx`] from two float literals, each converted like
+/// [`fx`] (API edge only).
+///
+/// ```
+/// use clockwork2d::prelude::*;
+/// assert_eq!(vec2(1.5, -2.0), Vec2::new(fx(1.5), fx(-2.0)));
+/// ```
+#[must_use]
+pub fn vec2(x: f64, y: f64) -> Vec2<Fx> {
+    Vec2::new(fx(x), fx(y))
 }
 
 macro_rules! impl_scalar_fixed {

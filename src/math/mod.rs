@@ -25,7 +25,7 @@ mod scalar;
 mod vec2;
 mod wide;
 
-pub use fixed_impls::{Fx, fx};
+pub use fixed_impls::{Fx, fx, vec2};
 pub use scalar::Scalar;
 pub use vec2::Vec2;
 pub use wide::{WideFloat, WideScalar};

@@ -34,7 +34,7 @@ use super::wide::WideScalar;
 
 /// A number type the engine can simulate with.
 ///
-/// Implemented for [`crate::Fx`] (`I32F32`, the default), `I48F16` (large,
+/// Implemented for [`crate::math::Fx`] (`I32F32`, the default), `I48F16` (large,
 /// coarse worlds), and for `f64` and `f32` as *reference* types used only to
 /// measure error (floats are not bit-identical across targets in general and
 /// must not be used for lockstep).

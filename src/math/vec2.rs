@@ -11,7 +11,7 @@ use serde::{Deserialize, Serialize};
 
 use super::scalar::Scalar;
 use super::wide::WideScalar;
-use crate::Fx;
+use crate::math::Fx;
 
 /// A 2D vector (or point) with components of scalar type `S`.
 ///

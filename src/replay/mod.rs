@@ -5,7 +5,7 @@
 //! ```
 //! use clockwork2d::prelude::*;
 //! use clockwork2d::replay::{Recorder, Replay};
-//! let mut world: World = World::new(WorldSettings::default());
+//! let mut world = World::new(WorldSettings::default());
 //! let ball = world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
 //! let mut recorder = Recorder::new(world, 10);
 //! for tick in 0..30 {
@@ -59,8 +59,8 @@ use serde::{Deserialize, Serialize};
 pub use recorder::Recorder;
 pub use verify::{Divergence, VerifyReport};
 
-use crate::Fx;
 use crate::hash::StateDigest;
+use crate::math::Fx;
 use crate::math::Scalar;
 use crate::snapshot::{
     FileHeader, FileKind, SnapshotError, decode_payload, encode_payload, read_envelope,

@@ -1,7 +1,7 @@
 //! [`Recorder`]: wraps a world while it plays and records a [`Replay`].
 
 use super::{Checkpoint, Replay};
-use crate::Fx;
+use crate::math::Fx;
 use crate::math::Scalar;
 use crate::world::{Command, CommandOutcome, World, WorldError};
 

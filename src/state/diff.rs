@@ -3,7 +3,7 @@
 //! ```
 //! use clockwork2d::prelude::*;
 //! use clockwork2d::diff::diff_snapshots;
-//! let mut world: World = World::new(WorldSettings::default());
+//! let mut world = World::new(WorldSettings::default());
 //! world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
 //! let before = world.snapshot();
 //! world.step();
@@ -18,9 +18,9 @@
 
 use core::fmt;
 
-use crate::Fx;
 use crate::dynamics::{Body, BodyId};
 use crate::geometry::Shape;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 use crate::snapshot::SnapshotError;
 use crate::world::World;

@@ -264,8 +264,8 @@ impl<S: Scalar> World<S> {
     ///
     /// ```
     /// use clockwork2d::prelude::*;
-    /// let mut a: World = World::new(WorldSettings::default());
-    /// let mut b: World = World::new(WorldSettings::default());
+    /// let mut a = World::new(WorldSettings::default());
+    /// let mut b = World::new(WorldSettings::default());
     /// for w in [&mut a, &mut b] {
     ///     w.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
     ///     w.step();
@@ -297,7 +297,7 @@ impl<S: Scalar> World<S> {
     ///
     /// ```
     /// use clockwork2d::prelude::*;
-    /// let mut a: World = World::new(WorldSettings::default());
+    /// let mut a = World::new(WorldSettings::default());
     /// let b = a.clone();
     /// a.step();
     /// assert_ne!(a.state_hash128(), b.state_hash128());

@@ -3,7 +3,7 @@
 //! ([`snapshot`]), validation of a decoded state ([`validate`]) and the
 //! field-by-field difference of two states ([`diff`]).
 //!
-//! Each of them destructures [`World`](crate::World) exhaustively (no `..`),
+//! Each of them destructures [`World`](crate::world::World) exhaustively (no `..`),
 //! so a new field of the world fails to compile in every one of them until
 //! it is hashed, written, validated and compared (or explicitly skipped, as
 //! the derived step context is). See ARCHITECTURE.md, "State".

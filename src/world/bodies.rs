@@ -104,20 +104,19 @@ impl<S: Scalar> World<S> {
                 field: "gravity_scale",
             });
         }
+        // One rule for every kind: the mass specification must be positive,
+        // even where it is not used (fixed and kinematic bodies have infinite
+        // mass), so a definition is valid or not whatever its kind.
+        let spec = match def.mass {
+            MassSpec::Density(value) | MassSpec::Mass(value) => value,
+        };
+        if !spec.is_positive() {
+            return Err(WorldError::NonPositiveMass);
+        }
         let (mass, inverse_mass) = if def.kind == BodyKind::Dynamic {
             let mass = match def.mass {
-                MassSpec::Density(density) => {
-                    if !density.is_positive() {
-                        return Err(WorldError::NonPositiveMass);
-                    }
-                    density.mul(def.shape.area())
-                }
-                MassSpec::Mass(mass) => {
-                    if !mass.is_positive() {
-                        return Err(WorldError::NonPositiveMass);
-                    }
-                    mass
-                }
+                MassSpec::Density(density) => density.mul(def.shape.area()),
+                MassSpec::Mass(mass) => mass,
             };
             // Mass in [2^-10, 2^20]: the inverse then has at least 12
             // significant bits in I32F32 (2^-20 / 2^-32), and mass × speed

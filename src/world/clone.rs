@@ -17,7 +17,7 @@ use crate::solver::StepContext;
 impl<S: Scalar> Clone for World<S> {
     fn clone(&self) -> Self {
         World {
-            settings: self.settings.clone(),
+            settings: self.settings,
             tick: self.tick,
             slots: self.slots.clone(),
             free_list: self.free_list.clone(),

@@ -7,16 +7,16 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::Fx;
 use crate::constraints::{Constraint, ConstraintId};
 use crate::dynamics::{BodyDef, BodyId};
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2};
 
 /// One mutation of the world.
 ///
 /// ```
 /// use clockwork2d::prelude::*;
-/// let mut world: World = World::new(WorldSettings::default());
+/// let mut world = World::new(WorldSettings::default());
 /// let out = world.apply(Command::Spawn(BodyDef::dynamic(Shape::circle(fx(0.5))))).unwrap();
 /// let CommandOutcome::Spawned(ball) = out else { unreachable!() };
 /// world.apply(Command::ApplyImpulse { body: ball, impulse: Vec2::new(fx(1.0), fx(0.0)) }).unwrap();

@@ -76,7 +76,7 @@ impl<S: Scalar> World<S> {
         }
     }
 
-    fn set_velocity_unchecked(&mut self, index: usize, velocity: crate::Vec2<S>) {
+    fn set_velocity_unchecked(&mut self, index: usize, velocity: crate::math::Vec2<S>) {
         if let Some(b) = self.slots[index].body.as_mut() {
             b.velocity = velocity;
         }

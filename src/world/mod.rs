@@ -26,10 +26,10 @@ pub use step::contacts::MAX_BULLET_IMPACTS;
 
 pub(crate) use bodies::MAX_SHAPE_SIZE;
 
-use crate::Fx;
 use crate::collision::CachedContact;
 use crate::constraints::ConstraintSlot;
 use crate::dynamics::{Body, BodyId};
+use crate::math::Fx;
 use crate::math::Scalar;
 use crate::solver::StepContext;
 
@@ -45,7 +45,7 @@ pub(crate) struct Slot<S: Scalar> {
 ///
 /// ```
 /// use clockwork2d::prelude::*;
-/// let mut world: World = World::new(WorldSettings::default());
+/// let mut world = World::new(WorldSettings::default());
 /// let _ground = world
 ///     .add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(20.0), fx(0.5))))
 ///         .position(Vec2::new(fx(0.0), fx(-0.5))))
@@ -60,8 +60,7 @@ pub(crate) struct Slot<S: Scalar> {
 /// let p = world.body(ball).unwrap().position();
 /// assert!((p.y.to_f64() - 0.25).abs() < 0.01); // resting on the ground
 /// ```
-#[derive(Debug, Serialize, Deserialize)]
-#[serde(bound = "")]
+#[derive(Debug)]
 pub struct World<S: Scalar = Fx> {
     pub(crate) settings: WorldSettings<S>,
     pub(crate) tick: u64,
@@ -82,22 +81,42 @@ pub struct World<S: Scalar = Fx> {
     pub(crate) events: Vec<Event>,
     /// Working buffers reused every step (no allocation in steady state);
     /// derived data, not part of the state (never serialised).
-    #[serde(skip)]
     pub(crate) scratch: StepContext<S>,
 }
 
-impl<S: Scalar> World<S> {
-    /// Creates an empty world. Settings outside their documented ranges are
-    /// replaced by the defaults field by field (use [`World::try_new`] to be
-    /// told instead).
+impl World<Fx> {
+    /// Creates an empty world of the default scalar [`Fx`] (no type
+    /// annotation needed; [`World::new_generic`] for another scalar).
+    ///
+    /// ```
+    /// use clockwork2d::prelude::*;
+    /// let world = World::new(WorldSettings::default()); // World<Fx>
+    /// assert_eq!(world.body_count(), 0);
+    /// ```
+    ///
+    /// # Panics
+    /// If `settings` are outside their documented ranges
+    /// ([`WorldSettings::validate`]); a world is never quietly built with
+    /// other settings than asked for. Use [`World::try_new`] for settings
+    /// that come from a file or a peer.
     #[must_use]
-    pub fn new(settings: WorldSettings<S>) -> Self {
-        let settings = if settings.validate().is_ok() {
-            settings
-        } else {
-            Self::repair_settings(settings)
-        };
-        Self::with_valid_settings(settings)
+    pub fn new(settings: WorldSettings<Fx>) -> Self {
+        Self::new_generic(settings)
+    }
+}
+
+impl<S: Scalar> World<S> {
+    /// Creates an empty world of any scalar type, e.g.
+    /// `World::<I48F16>::new_generic(WorldSettings::default())`.
+    ///
+    /// # Panics
+    /// If `settings` are invalid, like [`World::new`].
+    #[must_use]
+    pub fn new_generic(settings: WorldSettings<S>) -> Self {
+        match Self::try_new(settings) {
+            Ok(world) => world,
+            Err(e) => panic!("World::new: {e} (use World::try_new to handle invalid settings)"),
+        }
     }
 
     /// Creates an empty world, refusing settings outside their ranges.
@@ -106,11 +125,7 @@ impl<S: Scalar> World<S> {
     /// [`WorldError::InvalidSettings`] naming the first bad field.
     pub fn try_new(settings: WorldSettings<S>) -> Result<Self, WorldError> {
         settings.validate()?;
-        Ok(Self::with_valid_settings(settings))
-    }
-
-    fn with_valid_settings(settings: WorldSettings<S>) -> Self {
-        World {
+        Ok(World {
             settings,
             tick: 0,
             slots: Vec::new(),
@@ -121,44 +136,7 @@ impl<S: Scalar> World<S> {
             constraint_free_list: Vec::new(),
             events: Vec::new(),
             scratch: StepContext::default(),
-        }
-    }
-
-    /// Replaces each invalid field by its default (one field at a time, so
-    /// valid choices survive).
-    fn repair_settings(mut settings: WorldSettings<S>) -> WorldSettings<S> {
-        let defaults = WorldSettings::<S>::default();
-        while let Err(WorldError::InvalidSettings { field, .. }) = settings.validate() {
-            match field {
-                "gravity" => settings.gravity = defaults.gravity,
-                "dt" => settings.dt = defaults.dt,
-                "velocity_iterations" => {
-                    settings.velocity_iterations = defaults.velocity_iterations;
-                }
-                "position_iterations" => {
-                    settings.position_iterations = defaults.position_iterations;
-                }
-                "substeps" => settings.substeps = defaults.substeps,
-                "sleep_linear_threshold" => {
-                    settings.sleep_linear_threshold = defaults.sleep_linear_threshold;
-                }
-                "time_to_sleep" => settings.time_to_sleep = defaults.time_to_sleep,
-                "restitution_threshold" => {
-                    settings.restitution_threshold = defaults.restitution_threshold;
-                }
-                "linear_slop" => settings.linear_slop = defaults.linear_slop,
-                "max_correction" => settings.max_correction = defaults.max_correction,
-                "speculative_margin" => {
-                    settings.speculative_margin = defaults.speculative_margin;
-                }
-                "position_correction" => {
-                    settings.position_correction = defaults.position_correction;
-                }
-                "max_speed" => settings.max_speed = defaults.max_speed,
-                _ => settings.bounds = defaults.bounds,
-            }
-        }
-        settings
+        })
     }
 
     /// The world's settings.

@@ -121,7 +121,7 @@ impl<S: Scalar> World<S> {
     ///
     /// ```
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let wall = world.add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(0.5), fx(5.0))))
     ///     .position(Vec2::new(fx(10.0), fx(0.0)))).unwrap();
     /// let hit = world.raycast(Vec2::ZERO, Vec2::new(fx(1.0), fx(0.0)), fx(100.0)).unwrap();

@@ -12,8 +12,9 @@
 //! (AI sight lines, a spray of bullets, a query per body), use it, drop it.
 //!
 //! ```
+//! use clockwork2d::geometry::*;
 //! use clockwork2d::prelude::*;
-//! let mut world: World = World::new(WorldSettings::default());
+//! let mut world = World::new(WorldSettings::default());
 //! let ground = world.add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(20.0), fx(0.5))))
 //!     .position(Vec2::new(fx(0.0), fx(-0.5)))).unwrap();
 //! let mut guards = Vec::new();
@@ -53,7 +54,7 @@
 //! * **Leaf boxes** contain every point a body's query can report: for a box
 //!   body the closed box `center ± |half|` computed exactly as `ray_aabb`
 //!   computes it, for a circle `center ± |r|`; both also contain the body's
-//!   [`aabb`](crate::Body::aabb) as `query_aabb` compares it. Node boxes
+//!   [`aabb`](crate::dynamics::Body::aabb) as `query_aabb` compares it. Node boxes
 //!   are unions of their children's.
 //! * **Node test for rays** (`RaySetup::may_hit`): the exact slab test of the
 //!   box *grown by a margin* `m` against the segment `[0, bound]` of the ray.
@@ -105,9 +106,9 @@ use core::cmp::Ordering;
 
 use super::World;
 use super::queries::{BodyRayHit, QueryFilter, ray_shape, shape_contains_point, sort_hits};
-use crate::Fx;
 use crate::dynamics::{BodyId, BodyKind};
 use crate::geometry::{Aabb, Ray, Shape};
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2, WideScalar};
 
 /// Most bodies in one leaf. Small leaves let the per-body leaf-box test (a
@@ -489,8 +490,9 @@ impl<S: Scalar> RaySetup<S> {
 /// exactness argument proper is for the fixed-point scalars.
 ///
 /// ```
+/// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
-/// let mut world: World = World::new(WorldSettings::default());
+/// let mut world = World::new(WorldSettings::default());
 /// for i in 0..10 {
 ///     world.add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(0.5), fx(0.5))))
 ///         .position(Vec2::new(fx(f64::from(2 * i)), fx(0.0)))).unwrap();
@@ -526,8 +528,9 @@ impl<S: Scalar> World<S> {
     /// the world's methods directly.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let ball = world.add_body(BodyDef::dynamic(Shape::circle(fx(1.0)))
     ///     .position(Vec2::new(fx(5.0), fx(0.0)))).unwrap();
     /// let index = world.query_index();
@@ -609,8 +612,9 @@ impl<'w, S: Scalar> QueryIndex<'w, S> {
     /// The world this index describes.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let world: World = World::new(WorldSettings::default());
+    /// let world = World::new(WorldSettings::default());
     /// let index = world.query_index();
     /// assert_eq!(index.world().body_count(), 0);
     /// ```
@@ -648,8 +652,9 @@ impl<'w, S: Scalar> QueryIndex<'w, S> {
     /// distance.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let wall = world.add_body(BodyDef::fixed(Shape::aabb(Vec2::new(fx(0.5), fx(5.0))))
     ///     .position(Vec2::new(fx(10.0), fx(0.0)))).unwrap();
     /// let index = world.query_index();
@@ -671,8 +676,9 @@ impl<'w, S: Scalar> QueryIndex<'w, S> {
     /// restricted by a filter.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let shape = Shape::aabb(Vec2::new(fx(0.5), fx(0.5)));
     /// let near = world.add_body(BodyDef::fixed(shape).position(Vec2::new(fx(2.0), fx(0.0)))).unwrap();
     /// let far = world.add_body(BodyDef::dynamic(shape).position(Vec2::new(fx(4.0), fx(0.0)))).unwrap();
@@ -758,8 +764,9 @@ impl<'w, S: Scalar> QueryIndex<'w, S> {
     /// distance then id.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let shape = Shape::circle(fx(0.5));
     /// let b = world.add_body(BodyDef::fixed(shape).position(Vec2::new(fx(4.0), fx(0.0)))).unwrap();
     /// let a = world.add_body(BodyDef::fixed(shape).position(Vec2::new(fx(2.0), fx(0.0)))).unwrap();
@@ -814,8 +821,9 @@ impl<'w, S: Scalar> QueryIndex<'w, S> {
     /// `area` (touching counts), in id order.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let shape = Shape::circle(fx(0.5));
     /// let a = world.add_body(BodyDef::fixed(shape).position(Vec2::new(fx(0.0), fx(0.0)))).unwrap();
     /// let _b = world.add_body(BodyDef::fixed(shape).position(Vec2::new(fx(9.0), fx(0.0)))).unwrap();
@@ -859,8 +867,9 @@ impl<'w, S: Scalar> QueryIndex<'w, S> {
     /// (boundary included), in id order.
     ///
     /// ```
+    /// use clockwork2d::geometry::*;
     /// use clockwork2d::prelude::*;
-    /// let mut world: World = World::new(WorldSettings::default());
+    /// let mut world = World::new(WorldSettings::default());
     /// let ball = world.add_body(BodyDef::dynamic(Shape::circle(fx(1.0)))).unwrap();
     /// let index = world.query_index();
     /// assert_eq!(index.query_point(Vec2::new(fx(1.0), fx(0.0)), &QueryFilter::default()), vec![ball]);

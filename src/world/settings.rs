@@ -3,8 +3,8 @@
 use serde::{Deserialize, Serialize};
 
 use super::error::WorldError;
-use crate::Fx;
 use crate::geometry::Aabb;
+use crate::math::Fx;
 use crate::math::{Scalar, Vec2, WORLD_LIMIT};
 
 /// Most solver iterations accepted (bounds the work of one step).
@@ -23,7 +23,7 @@ pub const MAX_SUBSTEPS: u32 = 64;
 /// settings.velocity_iterations = 12;
 /// let world: World = World::try_new(settings).unwrap();
 /// ```
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(bound = "")]
 pub struct WorldSettings<S: Scalar = Fx> {
     /// Acceleration of gravity (units/s²).

@@ -4,7 +4,7 @@
 //! its final hash in the page; the panel runs this function in the browser
 //! and shows both.
 
-use clockwork2d::World;
+use clockwork2d::prelude::World;
 use clockwork2d_scene::{SceneError, builtin, scripted_commands};
 use wasm_bindgen::prelude::wasm_bindgen;
 

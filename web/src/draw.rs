@@ -3,7 +3,7 @@
 //! value is one conversion from `Fx`, no arithmetic).
 
 use clockwork2d::geometry::Shape;
-use clockwork2d::{Anchor, BodyKind, Constraint, Fx, Vec2, World};
+use clockwork2d::prelude::{Anchor, BodyKind, Constraint, Fx, Vec2, World};
 
 /// Numbers per body in [`Playground::bodies`](crate::Playground::bodies):
 /// `[shape, x, y, half_x, half_y, kind, state]` with shape 0 = circle

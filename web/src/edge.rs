@@ -3,7 +3,7 @@
 
 use core::fmt;
 
-use clockwork2d::{Fx, Vec2, WorldError};
+use clockwork2d::prelude::{Fx, Vec2, WorldError};
 use clockwork2d_scene::SceneError;
 use wasm_bindgen::JsValue;
 

@@ -9,7 +9,7 @@
 //! `AddConstraint`. So a recorded session replays bit for bit.
 
 use clockwork2d::geometry::Shape;
-use clockwork2d::{
+use clockwork2d::prelude::{
     Anchor, BodyDef, BodyId, BodyRayHit, Command, CommandOutcome, Constraint, ConstraintId, Fx,
     QueryFilter, Scalar, Vec2, World, WorldError, WorldSettings,
 };

@@ -3,7 +3,7 @@
 //!
 //! The page (`web/www/index.html` + `app.js`) owns the canvas, the mouse and
 //! the keyboard; this crate owns the world. Every interaction reaches the
-//! world as an engine [`Command`](clockwork2d::Command) or a query, exactly
+//! world as an engine [`Command`](clockwork2d::prelude::Command) or a query, exactly
 //! as a game would send it:
 //!
 //! * [`Playground`]: one world built from a built-in scene (or the grapple

@@ -2,7 +2,7 @@
 //! it.
 
 use clockwork2d::geometry::Shape;
-use clockwork2d::{BodyDef, Command, Fx, QueryFilter, Scalar, Vec2, World};
+use clockwork2d::prelude::{BodyDef, Command, Fx, QueryFilter, Scalar, Vec2, World};
 use clockwork2d_scene::{BUILTIN_SCENES, SceneError, builtin};
 use wasm_bindgen::prelude::wasm_bindgen;
 

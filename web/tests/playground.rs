@@ -3,8 +3,8 @@
 //! the determinism panel's run against the recorder the CLI uses.
 #![allow(clippy::float_arithmetic)] // reference values in f64
 
+use clockwork2d::prelude::{Scalar, World};
 use clockwork2d::replay::Recorder;
-use clockwork2d::{Scalar, World};
 use clockwork2d_scene::{BUILTIN_SCENES, builtin, scripted_commands};
 use clockwork2d_web::grapple::HEIGHT;
 use clockwork2d_web::{

@@ -32,6 +32,6 @@ pub struct DuelConfig;
 impl ggrs::Config for DuelConfig {
     type Input = DuelInput;
     type InputPredictor = ggrs::PredictRepeatLast;
-    type State = clockwork2d::World;
+    type State = clockwork2d::prelude::World;
     type Address = std::net::SocketAddr;
 }

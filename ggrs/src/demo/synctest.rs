@@ -2,7 +2,7 @@
 
 use std::time::{Duration, Instant};
 
-use clockwork2d::World;
+use clockwork2d::prelude::World;
 use ggrs::{Frame, GgrsError, SessionBuilder};
 
 use super::{DuelConfig, DuelInput, InputScript};

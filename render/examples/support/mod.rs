@@ -103,6 +103,6 @@ impl Trail {
 }
 
 /// `Vec2` from two `f64` literals (converted once, at the edge).
-pub fn v(x: f64, y: f64) -> clockwork2d::Vec2 {
-    clockwork2d::Vec2::new(clockwork2d::fx(x), clockwork2d::fx(y))
+pub fn v(x: f64, y: f64) -> clockwork2d::prelude::Vec2 {
+    clockwork2d::prelude::Vec2::new(clockwork2d::prelude::fx(x), clockwork2d::prelude::fx(y))
 }

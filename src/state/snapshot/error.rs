@@ -8,7 +8,7 @@ pub use crate::state::validate::InvalidState;
 /// magic bytes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FileKind {
-    /// A world snapshot ([`crate::World::snapshot`]).
+    /// A world snapshot ([`crate::world::World::snapshot`]).
     Snapshot,
     /// A replay ([`crate::replay::Replay`]).
     Replay,

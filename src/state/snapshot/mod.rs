@@ -10,7 +10,7 @@
 //!
 //! ```
 //! use clockwork2d::prelude::*;
-//! let mut world: World = World::new(WorldSettings::default());
+//! let mut world = World::new(WorldSettings::default());
 //! world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5)))).unwrap();
 //! world.step();
 //! let bytes = world.snapshot();

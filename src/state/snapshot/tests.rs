@@ -13,7 +13,7 @@ use crate::world::{World, WorldSettings};
 /// A small world that has contacts, a sleeping island, a free slot and a
 /// constraint.
 fn sample() -> World {
-    let mut w: World = World::new(WorldSettings::default());
+    let mut w = World::new(WorldSettings::default());
     w.add_body(
         BodyDef::fixed(Shape::aabb(Vec2::new(fx(20.0), fx(0.5))))
             .position(Vec2::new(fx(0.0), fx(-0.5))),
@@ -284,7 +284,7 @@ fn bad_constraints_are_refused() {
         .unwrap();
     entry.constraint = Constraint::rope(
         Anchor::Point(Vec2::new(fx(0.0), fx(5.0))),
-        Anchor::Body(crate::BodyId::from_parts(dead, gen_now)),
+        Anchor::Body(crate::dynamics::BodyId::from_parts(dead, gen_now)),
         fx(1.0),
     );
     refused(&w, "constraints");
