@@ -13,9 +13,11 @@
 // and native ms/step for large_pyramid and balls5000) to web/test/output/.
 //
 // Environment: CHROMIUM (default /usr/bin/chromium), CLOCKWORK2D_CLI (default
-// <target dir>/release/clockwork2d, CARGO_TARGET_DIR honoured).
+// <target dir>/release/clockwork2d, CARGO_TARGET_DIR honoured), SPEED_ROUNDS
+// (browser/native speed pairs per scene, default 1).
 import { spawn, execFileSync } from 'node:child_process';
-import { mkdtempSync, mkdirSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, mkdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -29,6 +31,12 @@ const TARGET_DIR = resolve(ROOT, process.env.CARGO_TARGET_DIR || 'target');
 const CLI = process.env.CLOCKWORK2D_CLI || join(TARGET_DIR, 'release', 'clockwork2d');
 const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
 const SPEED_SCENES = ['large_pyramid', 'balls5000'];
+const SPEED_ROUNDS = Math.max(1, Number(process.env.SPEED_ROUNDS || 1));
+
+function median(values) {
+  const v = [...values].sort((a, b) => a - b);
+  return v.length % 2 ? v[(v.length - 1) / 2] : (v[v.length / 2 - 1] + v[v.length / 2]) / 2;
+}
 
 let passed = 0;
 let failed = 0;
@@ -134,17 +142,56 @@ async function main() {
         `${scene}: tick 300 browser ${at300.hash} = native ${cli.hash}`);
     }
 
-    // Speed: the same 300 ticks from a fresh build, browser against native.
+    // Speed: the same 300 ticks from a fresh build, browser against native,
+    // alternating (SPEED_ROUNDS rounds, default 1; medians reported).
     for (const scene of SPEED_SCENES) {
-      const browser = await page.evaluate((s) => {
-        window.clockwork.select(s);
-        return window.clockwork.step(300).msPerStep;
-      }, scene);
-      const cli = nativeRun(scene, 300);
-      results.speed[scene] = { ticks: 300, browser_ms_per_step: browser, native_ms_per_step: cli.msPerStep };
-      console.log(`speed ${scene}: browser ${browser.toFixed(3)} ms/step, native ${cli.msPerStep.toFixed(3)} ms/step ` +
-        `(x${(browser / cli.msPerStep).toFixed(2)})`);
+      const browser = [];
+      const nativeMs = [];
+      for (let round = 0; round < SPEED_ROUNDS; round += 1) {
+        browser.push(await page.evaluate((s) => {
+          window.clockwork.select(s);
+          return window.clockwork.step(300).msPerStep;
+        }, scene));
+        nativeMs.push(nativeRun(scene, 300).msPerStep);
+      }
+      const b = median(browser), n = median(nativeMs);
+      results.speed[scene] = { ticks: 300, rounds: SPEED_ROUNDS, browser_ms_per_step: browser, native_ms_per_step: nativeMs };
+      console.log(`speed ${scene} (300 ticks, median of ${SPEED_ROUNDS}): browser ${b.toFixed(3)} ms/step, ` +
+        `native ${n.toFixed(3)} ms/step (browser/native ${(b / n).toFixed(2)})`);
     }
+
+    // The controls a person uses: the scene menu, the step and play/pause
+    // buttons, N for one step; the readout shows the world's tick and hash
+    // and a ms/step once steps were timed.
+    await page.selectOption('#scene', 'balls');
+    const chosen = await page.evaluate(() => window.clockwork.state());
+    check(chosen.scene === 'balls' && chosen.tick === 0, `the scene menu loads a scene (${chosen.scene} at tick ${chosen.tick})`);
+    await page.click('#step');
+    await page.click('#step');
+    const stepped = await page.evaluate(() => window.clockwork.state());
+    const playLabel = await page.textContent('#play');
+    check(stepped.tick === 2 && playLabel === 'play', `the step button steps once, paused (tick ${stepped.tick}, button "${playLabel}")`);
+    await page.keyboard.press('n');
+    const keyed = await page.evaluate(() => window.clockwork.state());
+    check(keyed.tick === 3, `N steps once (tick ${keyed.tick})`);
+    await page.click('#play');
+    await page.waitForFunction(() => window.clockwork.state().tick >= 30, null, { timeout: 30000 });
+    check(await page.textContent('#play') === 'pause', 'the play button runs the scene by itself (tick 30 reached)');
+    await page.click('#play');
+    const pausedAt = await page.evaluate(() => window.clockwork.state().tick);
+    await page.waitForTimeout(300);
+    const stillAt = await page.evaluate(() => window.clockwork.state().tick);
+    check(stillAt === pausedAt, `the pause button stops it (tick ${pausedAt}, still ${stillAt} after 0.3 s)`);
+    await page.waitForTimeout(50); // one animation frame: the readout is refreshed every frame
+    const readout = {
+      tick: await page.textContent('#tick'),
+      hash: await page.textContent('#hash'),
+      ms: await page.textContent('#ms'),
+    };
+    const now = await page.evaluate(() => window.clockwork.state());
+    check(readout.tick === String(now.tick) && readout.hash === now.hash && Number(readout.ms) > 0,
+      `the readout shows tick ${readout.tick}, hash ${readout.hash}, ${readout.ms} ms/step`);
+    await page.screenshot({ path: join(OUT, 'controls.png') });
 
     // A click drops a body; a drag pushes one.
     await page.evaluate(() => { window.clockwork.select('stack'); window.clockwork.pause(); });
@@ -221,7 +268,26 @@ async function main() {
     server.kill();
     rmSync(profile, { recursive: true, force: true });
   }
+  const wasmPath = join(WWW, 'pkg', 'clockwork2d_web_bg.wasm');
+  const wasm = readFileSync(wasmPath);
+  results.wasm_bytes = wasm.length;
+  results.wasm_gzip9_bytes = gzipSync(wasm, { level: 9 }).length;
   writeFileSync(join(OUT, 'results.json'), JSON.stringify(results, null, 2) + '\n');
+  // The figures, as a table: browser against native.
+  console.log(`\n| scene | browser hash at tick 300 | native CLI hash | equal |\n|---|---|---|---|`);
+  for (const [scene, r] of Object.entries(results.scenes)) {
+    console.log(`| ${scene} | ${r.browser} | ${r.native_cli} | ${r.browser === r.native_cli ? 'yes' : 'NO'} |`);
+  }
+  if (results.determinism) {
+    const d = results.determinism;
+    console.log(`| determinism panel: ${d.scene}, seed ${d.seed}, ${d.ticks} ticks | ${d.browser} | ${d.hash} | ${d.browser === d.hash ? 'yes' : 'NO'} |`);
+  }
+  console.log(`\n| scene (300 ticks) | browser ms/step | native ms/step | browser/native |\n|---|---:|---:|---:|`);
+  for (const [scene, r] of Object.entries(results.speed)) {
+    const b = median(r.browser_ms_per_step), n = median(r.native_ms_per_step);
+    console.log(`| ${scene} | ${b.toFixed(2)} | ${n.toFixed(2)} | ${(b / n).toFixed(2)} |`);
+  }
+  console.log(`\nwasm: ${results.wasm_bytes} bytes, ${results.wasm_gzip9_bytes} gzip -9\n`);
   console.log(`${passed} passed, ${failed} failed`);
   process.exitCode = failed === 0 ? 0 : 1;
 }

@@ -102,6 +102,22 @@ function bodyFill(kind, state, isPlayer) {
   return state === 1 ? FILL.asleep : FILL.awake;
 }
 
+// A spring: a zigzag of 8 teeth between its ends (a straight line when the
+// ends are closer than 2 pixels).
+function zigzag(sx, sy, ex, ey) {
+  const dx = ex - sx, dy = ey - sy;
+  const length = Math.hypot(dx, dy);
+  ctx.moveTo(sx, sy);
+  if (length < 2) { ctx.lineTo(ex, ey); return; }
+  const teeth = 8, width = Math.min(6, length / 3);
+  const nx = -dy / length * width, ny = dx / length * width;
+  for (let i = 1; i < 2 * teeth; i += 1) {
+    const t = i / (2 * teeth), side = i % 2 === 1 ? 1 : -1;
+    ctx.lineTo(sx + dx * t + side * nx, sy + dy * t + side * ny);
+  }
+  ctx.lineTo(ex, ey);
+}
+
 function draw() {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
   const s = camera.scale;
@@ -146,12 +162,14 @@ function draw() {
     const [ex, ey] = toScreen(bx, by);
     ctx.strokeStyle = kind === 2 ? '#7a4a1c' : '#2f9a52';
     ctx.lineWidth = kind === 2 ? 2 : 1.5;
-    ctx.setLineDash(kind === 0 ? [4, 3] : []);
     ctx.beginPath();
-    ctx.moveTo(sx, sy);
-    ctx.lineTo(ex, ey);
+    if (kind === 2) {
+      ctx.moveTo(sx, sy);
+      ctx.lineTo(ex, ey);
+    } else {
+      zigzag(sx, sy, ex, ey);
+    }
     ctx.stroke();
-    ctx.setLineDash([]);
     ctx.fillStyle = '#333';
     ctx.fillRect(sx - 2, sy - 2, 4, 4);
   }
