@@ -7,10 +7,14 @@
 // browser hash equals the native CLI's and shows green; every scene runs
 // 120 ticks; every built-in scene's hash after 300 ticks equals the hash the
 // native CLI prints for the same scene and ticks (asked here, and the one
-// built into the page); a click adds a body; a drag pushes a body; the
+// built into the page); the scene menu, the step and play/pause buttons and
+// the N key work and the readout shows tick, hash and ms/step; a click adds
+// a ball (or a box, when chosen) where it was; a drag pushes a body; the
 // grapple fires on a click, reels on a key, holds the player on the rope,
-// and lets go on Space. Writes screenshots and results.json (with browser
-// and native ms/step for large_pyramid and balls5000) to web/test/output/.
+// and lets go on Space. Writes screenshots and results.json to
+// web/test/output/, and prints the hash agreement table (browser against
+// native), browser and native ms/step for large_pyramid and balls5000, and
+// the .wasm size.
 //
 // Environment: CHROMIUM (default /usr/bin/chromium), CLOCKWORK2D_CLI (default
 // <target dir>/release/clockwork2d, CARGO_TARGET_DIR honoured), SPEED_ROUNDS
@@ -199,9 +203,24 @@ async function main() {
     const dropAt = await page.evaluate(() => window.clockwork.toPage(3, 8));
     await page.mouse.click(dropAt[0], dropAt[1]);
     const afterClick = await page.evaluate(() => window.clockwork.state());
-    check(afterClick.bodies === before.bodies + 1, `a click adds a body (${before.bodies} -> ${afterClick.bodies})`);
+    // The new body is the last one, a dynamic ball where the click was, to
+    // within the mouse's rounding to whole page pixels (1.5 pixels here).
+    const newest = (b) => b.slice(b.length - 7);
+    const pixel = await page.evaluate(() => 1 / (window.clockwork.toPage(1, 0)[0] - window.clockwork.toPage(0, 0)[0]));
+    const ball = newest(await page.evaluate(() => window.clockwork.bodies()));
+    check(afterClick.bodies === before.bodies + 1 && ball[0] === 0 && ball[5] === 2 &&
+      Math.hypot(ball[1] - 3, ball[2] - 8) < 1.5 * pixel,
+      `a click adds a ball there (${before.bodies} -> ${afterClick.bodies} bodies, at (${ball[1].toFixed(3)}, ${ball[2].toFixed(3)}))`);
+    await page.check('input[name="shape"][value="box"]');
+    const boxAt = await page.evaluate(() => window.clockwork.toPage(3, 11));
+    await page.mouse.click(boxAt[0], boxAt[1]);
+    const box = newest(await page.evaluate(() => window.clockwork.bodies()));
+    const afterBox = await page.evaluate(() => window.clockwork.state());
+    check(afterBox.bodies === before.bodies + 2 && box[0] === 1 && box[5] === 2 &&
+      Math.hypot(box[1] - 3, box[2] - 11) < 1.5 * pixel,
+      `with "box" chosen a click adds a box there (at (${box[1].toFixed(3)}, ${box[2].toFixed(3)}))`);
     const top = await page.evaluate(() => {
-      // The highest dynamic body of the stack (not the dropped one at x = 3).
+      // The highest dynamic body of the stack (not the dropped ones at x = 3).
       const b = window.clockwork.bodies();
       let best = null;
       for (let i = 0; i < b.length; i += 7) {
@@ -287,7 +306,7 @@ async function main() {
     const b = median(r.browser_ms_per_step), n = median(r.native_ms_per_step);
     console.log(`| ${scene} | ${b.toFixed(2)} | ${n.toFixed(2)} | ${(b / n).toFixed(2)} |`);
   }
-  console.log(`\nwasm: ${results.wasm_bytes} bytes, ${results.wasm_gzip9_bytes} gzip -9\n`);
+  console.log(`\nwasm: ${results.wasm_bytes} bytes, ${results.wasm_gzip9_bytes} gzipped (node zlib, level 9)\n`);
   console.log(`${passed} passed, ${failed} failed`);
   process.exitCode = failed === 0 ? 0 : 1;
 }
