@@ -11,7 +11,7 @@
 // the N key work and the readout shows tick, hash and ms/step; a click adds
 // a ball (or a box, when chosen) where it was; a drag pushes a body; the
 // grapple fires on a click, reels on a key, holds the player on the rope,
-// and lets go on Space. Writes screenshots and results.json to
+// and lets go on Space; on the ground D/A push the player and W jumps. Writes screenshots and results.json to
 // web/test/output/, and prints the hash agreement table (browser against
 // native), browser and native ms/step for large_pyramid and balls5000, and
 // the .wasm size.
@@ -280,6 +280,29 @@ async function main() {
     await page.keyboard.press('Space');
     const released = await page.evaluate(() => window.clockwork.state());
     check(released.constraints === 0 && released.grapple.length === 2, 'Space lets go of the rope');
+
+    // On the ground, D and A push the player sideways and W jumps.
+    await page.evaluate(() => { window.clockwork.select('grapple'); window.clockwork.pause(); window.clockwork.step(30); });
+    const standing = (await page.evaluate(() => window.clockwork.state())).grapple;
+    await page.keyboard.down('d');
+    const walkedRight = (await page.evaluate(() => window.clockwork.step(20))).grapple;
+    await page.keyboard.up('d');
+    await page.keyboard.down('a');
+    const walkedLeft = (await page.evaluate(() => window.clockwork.step(40))).grapple;
+    await page.keyboard.up('a');
+    // A held key adds 0.2 units/s per tick (12 units/s²) against the ground's
+    // Coulomb friction mu·g = 0.6·9.8 = 5.9 units/s²: from rest, 20 ticks
+    // (1/3 s) travel ½·6.1·(1/3)² = 0.34 units. Ask for half of that.
+    check(walkedRight[0] - standing[0] > 0.17 && walkedRight[0] - walkedLeft[0] > 0.17,
+      `D and A push the player (x ${standing[0].toFixed(2)} -> ${walkedRight[0].toFixed(2)} -> ${walkedLeft[0].toFixed(2)})`);
+    await page.evaluate(() => window.clockwork.step(60));
+    const landed = (await page.evaluate(() => window.clockwork.state())).grapple;
+    await page.keyboard.down('w');
+    await page.evaluate(() => window.clockwork.step(1));
+    await page.keyboard.up('w');
+    const jumped = (await page.evaluate(() => window.clockwork.step(9))).grapple;
+    // Take-off at 7 units/s: after 10 ticks (1/6 s) y rose 7/6 - g/72 ~ 1.03.
+    check(jumped[1] - landed[1] > 0.5, `W jumps off the ground (y ${landed[1].toFixed(2)} -> ${jumped[1].toFixed(2)})`);
 
     check(consoleErrors.length === 0, `no console error${consoleErrors.length ? ': ' + consoleErrors.join(' | ') : ''}`);
   } finally {
