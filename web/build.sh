@@ -56,7 +56,9 @@ rm -rf "$OUT/pkg"
 wasm-bindgen --target web --no-typescript --out-dir "$OUT/pkg" "$WASM"
 
 log "native hashes (clockwork2d CLI, release)"
-cargo build -p clockwork2d-cli --release
+# The workspace's selection (no -p), as `cargo run --release` builds it: the
+# same feature set, so the binary CI's main job built is reused, not rebuilt.
+cargo build --release --bin clockwork2d
 CLI=$TARGET_DIR/release/clockwork2d
 final_hash() { sed -n 's/^.*final.* hash \(0x[0-9a-f]\{16\}\).*/\1/p'; }
 scenes_json=""
