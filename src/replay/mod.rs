@@ -51,9 +51,6 @@
 mod recorder;
 mod verify;
 
-use std::marker::PhantomData;
-
-use serde::de::{Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
 
 pub use recorder::Recorder;
@@ -63,7 +60,7 @@ use crate::hash::StateDigest;
 use crate::math::Fx;
 use crate::math::Scalar;
 use crate::snapshot::{
-    FileHeader, FileKind, SnapshotError, decode_payload, encode_payload, read_envelope,
+    FileHeader, FileKind, SnapshotError, bounded, decode_payload, encode_payload, read_envelope,
     write_envelope,
 };
 use crate::world::{Command, World};
@@ -154,45 +151,6 @@ struct PayloadIn<S: Scalar> {
     commands: Vec<(u64, Command<S>)>,
     #[serde(deserialize_with = "bounded::<_, _, MAX_CHECKPOINTS>")]
     checkpoints: Vec<Checkpoint>,
-}
-
-/// Deserialises a sequence of at most `MAX` elements (see the snapshot
-/// payload's twin: memory stays proportional to the limits).
-fn bounded<'de, D, T, const MAX: usize>(deserializer: D) -> Result<Vec<T>, D::Error>
-where
-    D: Deserializer<'de>,
-    T: Deserialize<'de>,
-{
-    struct Bounded<T, const MAX: usize>(PhantomData<T>);
-
-    impl<'de, T: Deserialize<'de>, const MAX: usize> Visitor<'de> for Bounded<T, MAX> {
-        type Value = Vec<T>;
-
-        fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-            write!(f, "a sequence of at most {MAX} elements")
-        }
-
-        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<T>, A::Error> {
-            let hint = seq.size_hint().unwrap_or(0);
-            if hint > MAX {
-                return Err(serde::de::Error::custom(format!(
-                    "a table of {hint} entries is above the limit of {MAX}"
-                )));
-            }
-            let mut out = Vec::with_capacity(hint.min(1024));
-            while let Some(x) = seq.next_element()? {
-                if out.len() >= MAX {
-                    return Err(serde::de::Error::custom(format!(
-                        "a table is above the limit of {MAX} entries"
-                    )));
-                }
-                out.push(x);
-            }
-            Ok(out)
-        }
-    }
-
-    deserializer.deserialize_seq(Bounded::<T, MAX>(PhantomData))
 }
 
 impl<S: Scalar> Replay<S> {

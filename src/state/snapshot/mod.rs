@@ -61,6 +61,7 @@
 //! validates every invariant of the state. Each failure has its own
 //! [`SnapshotError`] variant.
 
+mod bounded_seq;
 mod envelope;
 mod error;
 mod payload;
@@ -69,6 +70,7 @@ pub use envelope::{FORMAT_VERSION, PAYLOAD_LIMIT};
 pub use error::{FileKind, InvalidState, SnapshotError};
 pub use payload::{MAX_SNAPSHOT_CONSTRAINTS, MAX_SNAPSHOT_SLOTS};
 
+pub(crate) use bounded_seq::bounded;
 pub(crate) use envelope::{Envelope, read as read_envelope, write as write_envelope};
 pub(crate) use envelope::{decode as decode_payload, encode as encode_payload};
 

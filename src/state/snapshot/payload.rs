@@ -14,12 +14,10 @@
 //! cannot make the decoder allocate gigabytes, then [`World::validate`]
 //! checks the rebuilt world.
 
-use std::collections::BTreeMap;
-use std::marker::PhantomData;
-
-use serde::de::{Deserializer, SeqAccess, Visitor};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 
+use super::bounded_seq::bounded;
 use super::error::SnapshotError;
 use crate::collision::CachedContact;
 use crate::constraints::ConstraintSlot;
@@ -180,49 +178,6 @@ struct PayloadIn<S: Scalar> {
     constraint_free_list: Vec<u32>,
     #[serde(deserialize_with = "bounded::<_, _, MAX_CONTACTS>")]
     events: Vec<Event>,
-}
-
-/// Deserialises a sequence of at most `MAX` elements. Serde's own `Vec`
-/// already caps its pre-allocation; this caps the total, so memory stays
-/// proportional to the limit even when elements are tiny in the file and
-/// large in memory.
-fn bounded<'de, D, T, const MAX: usize>(deserializer: D) -> Result<Vec<T>, D::Error>
-where
-    D: Deserializer<'de>,
-    T: Deserialize<'de>,
-{
-    struct Bounded<T, const MAX: usize>(PhantomData<T>);
-
-    impl<'de, T: Deserialize<'de>, const MAX: usize> Visitor<'de> for Bounded<T, MAX> {
-        type Value = Vec<T>;
-
-        fn expecting(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-            write!(f, "a sequence of at most {MAX} elements")
-        }
-
-        fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<T>, A::Error> {
-            let hint = seq.size_hint().unwrap_or(0);
-            if hint > MAX {
-                return Err(serde::de::Error::custom(format!(
-                    "a table of {hint} entries is above the limit of {MAX}"
-                )));
-            }
-            // Pre-allocate only a little: the length is untrusted until the
-            // elements have actually been read.
-            let mut out = Vec::with_capacity(hint.min(1024));
-            while let Some(x) = seq.next_element()? {
-                if out.len() >= MAX {
-                    return Err(serde::de::Error::custom(format!(
-                        "a table is above the limit of {MAX} entries"
-                    )));
-                }
-                out.push(x);
-            }
-            Ok(out)
-        }
-    }
-
-    deserializer.deserialize_seq(Bounded::<T, MAX>(PhantomData))
 }
 
 /// Encodes the world's state (everything but the derived scratch buffers).
