@@ -21,6 +21,7 @@
 mod collision;
 pub mod constraints;
 pub mod dynamics;
+pub mod generational_id;
 pub mod geometry;
 pub mod math;
 pub mod replay;

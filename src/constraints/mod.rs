@@ -51,7 +51,7 @@ use serde::{Deserialize, Serialize};
 
 pub use anchor::Anchor;
 pub use constraint::Constraint;
-pub use constraint_id::ConstraintId;
+pub use constraint_id::{ConstraintId, ConstraintMarker};
 
 use crate::math::Scalar;
 

@@ -6,4 +6,4 @@ pub(crate) mod islands;
 
 pub(crate) use body::NO_ISLAND;
 pub use body::{Body, BodyDef, BodyKind, MassSpec};
-pub use body_id::BodyId;
+pub use body_id::{BodyId, BodyMarker};
