@@ -253,6 +253,14 @@ fn read_file(path: &Path) -> Result<Vec<u8>, String> {
     std::fs::read(path).map_err(|e| format!("cannot read {}: {e}", path.display()))
 }
 
+/// Reads a snapshot or replay file and its header (the frame check that
+/// `verify`, `info` and `diff` all start with); the error names the file.
+fn read_with_header(path: &Path) -> Result<(Vec<u8>, FileHeader), String> {
+    let bytes = read_file(path)?;
+    let header = FileHeader::read(&bytes).map_err(|e| format!("{}: {e}", path.display()))?;
+    Ok((bytes, header))
+}
+
 fn record(
     scene_name: &str,
     ticks: u64,
@@ -358,13 +366,9 @@ macro_rules! with_scalar {
 }
 
 fn verify(path: &Path) -> ExitCode {
-    let bytes = match read_file(path) {
-        Ok(b) => b,
+    let (bytes, header) = match read_with_header(path) {
+        Ok(read) => read,
         Err(e) => return fail(e),
-    };
-    let header = match FileHeader::read(&bytes) {
-        Ok(h) => h,
-        Err(e) => return fail(format!("{}: {e}", path.display())),
     };
     with_scalar!(header.scalar_id, S => verify_as::<S>(path, &bytes, header.kind),
         _ => fail(format!("{}: unknown scalar id {}", path.display(), header.scalar_id)))
@@ -426,13 +430,9 @@ fn verify_as<S: Scalar>(path: &Path, bytes: &[u8], kind: FileKind) -> ExitCode {
 }
 
 fn info(path: &Path) -> ExitCode {
-    let bytes = match read_file(path) {
-        Ok(b) => b,
+    let (bytes, header) = match read_with_header(path) {
+        Ok(read) => read,
         Err(e) => return fail(e),
-    };
-    let header = match FileHeader::read(&bytes) {
-        Ok(h) => h,
-        Err(e) => return fail(format!("{}: {e}", path.display())),
     };
     println!("clockwork2d {}: {}", header.kind, path.display());
     println!("  format version  {}", header.format_version);
@@ -509,13 +509,9 @@ fn summarize<S: Scalar>(world: &World<S>) {
 }
 
 fn diff(a: &Path, b: &Path, limit: usize) -> ExitCode {
-    let (bytes_a, bytes_b) = match (read_file(a), read_file(b)) {
+    let ((bytes_a, header), bytes_b) = match (read_with_header(a), read_file(b)) {
         (Ok(x), Ok(y)) => (x, y),
         (Err(e), _) | (_, Err(e)) => return fail(e),
-    };
-    let header = match FileHeader::read(&bytes_a) {
-        Ok(h) => h,
-        Err(e) => return fail(format!("{}: {e}", a.display())),
     };
     with_scalar!(header.scalar_id, S => diff_as::<S>(a, &bytes_a, b, &bytes_b, limit),
         _ => fail(format!("{}: unknown scalar id {}", a.display(), header.scalar_id)))
