@@ -15,10 +15,6 @@
 
 use clockwork2d::prelude::*;
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 /// Inside of the area: x in [-10, 10], y in [0, 10].
 const HALF_WIDTH: f64 = 10.0;
 const HEIGHT: f64 = 10.0;
@@ -47,7 +43,7 @@ fn walls(world: &mut World) -> Result<(), WorldError> {
         ((t, HEIGHT / 2.0 + t), (HALF_WIDTH + t, HEIGHT / 2.0)), // right
     ] {
         world.add_body(
-            BodyDef::fixed(Shape::aabb(v(half.0, half.1))).position(v(centre.0, centre.1)),
+            BodyDef::fixed(Shape::aabb(vec2(half.0, half.1))).position(vec2(centre.0, centre.1)),
         )?;
     }
     Ok(())
@@ -66,7 +62,7 @@ fn run(verbose: bool) -> Result<u64, WorldError> {
     let player = world.add_body(
         BodyDef::dynamic(Shape::circle(fx(0.3)))
             .mass(fx(1.0))
-            .position(v(0.0, 0.3)),
+            .position(vec2(0.0, 0.3)),
     )?;
     let filter = QueryFilter {
         exclude: Some(player),
@@ -87,7 +83,7 @@ fn run(verbose: bool) -> Result<u64, WorldError> {
         // Jump, and wait for the top of the jump (at most one second).
         world.apply(Command::SetVelocity {
             body: player,
-            velocity: v(jump_x, 7.0),
+            velocity: vec2(jump_x, 7.0),
         })?;
         for _ in 0..60 {
             world.step();
@@ -100,7 +96,7 @@ fn run(verbose: bool) -> Result<u64, WorldError> {
             }
         }
         let from = world.body(player).map_or(Vec2::ZERO, |b| b.position());
-        let Some(hit) = world.raycast_filtered(from, v(ax, ay), fx(100.0), &filter) else {
+        let Some(hit) = world.raycast_filtered(from, vec2(ax, ay), fx(100.0), &filter) else {
             if verbose {
                 println!("aim {n} ({ax}, {ay}): no hit");
             }

@@ -13,10 +13,6 @@ use std::f64::consts::PI;
 
 use clockwork2d::prelude::*;
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 /// Pendulum: length 1, pivot (-2, 4), 20° amplitude.
 const PIVOT: (f64, f64) = (-2.0, 4.0);
 const LENGTH: f64 = 1.0;
@@ -39,13 +35,13 @@ fn main() -> Result<(), WorldError> {
     let bob = world.add_body(
         BodyDef::dynamic(Shape::circle(fx(0.1)))
             .mass(fx(1.0))
-            .position(v(
+            .position(vec2(
                 PIVOT.0 + LENGTH * angle.sin(),
                 PIVOT.1 - LENGTH * angle.cos(),
             )),
     )?;
     world.add_constraint(Constraint::rope(
-        Anchor::Point(v(PIVOT.0, PIVOT.1)),
+        Anchor::Point(vec2(PIVOT.0, PIVOT.1)),
         Anchor::Body(bob),
         fx(LENGTH),
     ))?;
@@ -55,11 +51,14 @@ fn main() -> Result<(), WorldError> {
         let id = world.add_body(
             BodyDef::dynamic(Shape::circle(fx(0.05)))
                 .mass(fx(0.2))
-                .position(v(CHAIN_PIVOT.0 + SEGMENT * (i + 1) as f64, CHAIN_PIVOT.1)),
+                .position(vec2(
+                    CHAIN_PIVOT.0 + SEGMENT * (i + 1) as f64,
+                    CHAIN_PIVOT.1,
+                )),
         )?;
         let previous = match links.last() {
             Some(&p) => Anchor::Body(p),
-            None => Anchor::Point(v(CHAIN_PIVOT.0, CHAIN_PIVOT.1)),
+            None => Anchor::Point(vec2(CHAIN_PIVOT.0, CHAIN_PIVOT.1)),
         };
         world.add_constraint(Constraint::rope(previous, Anchor::Body(id), fx(SEGMENT)))?;
         links.push(id);

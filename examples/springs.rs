@@ -12,17 +12,13 @@
 
 use clockwork2d::prelude::*;
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 fn main() -> Result<(), WorldError> {
     let mut world = World::new(WorldSettings::default());
     let ball = |world: &mut World, x: f64, y: f64| {
         world.add_body(
             BodyDef::dynamic(Shape::circle(fx(0.25)))
                 .mass(fx(1.0))
-                .position(v(x, y)),
+                .position(vec2(x, y)),
         )
     };
 
@@ -31,19 +27,19 @@ fn main() -> Result<(), WorldError> {
     let bendy = ball(&mut world, anchor.0 + offset.0 + 1.0, anchor.1 + offset.1)?;
     world.add_constraint(
         Constraint::bendy_spring(
-            Anchor::Point(v(anchor.0, anchor.1)),
+            Anchor::Point(vec2(anchor.0, anchor.1)),
             Anchor::Body(bendy),
-            v(k.0, k.1),
+            vec2(k.0, k.1),
             fx(c),
         )
-        .with_rest_offset(v(offset.0, offset.1)),
+        .with_rest_offset(vec2(offset.0, offset.1)),
     )?;
 
     // Radial: pivot (3, 5), rest length 1.5, released from the horizontal.
     let (pivot, rest, k_radial, c_radial) = ((3.0, 5.0), 1.5, 40.0, 0.5);
     let radial = ball(&mut world, pivot.0 + rest, pivot.1)?;
     world.add_constraint(Constraint::radial_spring(
-        Anchor::Point(v(pivot.0, pivot.1)),
+        Anchor::Point(vec2(pivot.0, pivot.1)),
         Anchor::Body(radial),
         fx(rest),
         fx(k_radial),

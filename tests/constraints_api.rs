@@ -4,13 +4,9 @@
 
 use clockwork2d::prelude::*;
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 fn ball(world: &mut World, x: f64, y: f64) -> BodyId {
     world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(v(x, y)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(vec2(x, y)))
         .expect("ball")
 }
 
@@ -18,7 +14,7 @@ fn ball(world: &mut World, x: f64, y: f64) -> BodyId {
 fn scene() -> (World, BodyId, BodyId, BodyId) {
     let mut world = World::new(WorldSettings::default());
     let ground = world
-        .add_body(BodyDef::fixed(Shape::aabb(v(20.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(20.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     let a = ball(&mut world, -1.0, 3.0);
     let b = ball(&mut world, 1.0, 3.0);
@@ -26,7 +22,7 @@ fn scene() -> (World, BodyId, BodyId, BodyId) {
 }
 
 fn point(x: f64, y: f64) -> Anchor {
-    Anchor::Point(v(x, y))
+    Anchor::Point(vec2(x, y))
 }
 
 /// Every refused constraint must leave the world exactly as it was: the
@@ -59,13 +55,13 @@ fn add_constraint_with_a_dead_body_is_unknown_body_and_leaves_the_world_unchange
         );
         assert_refused(
             &mut world,
-            Constraint::bendy_spring(Anchor::Body(a), Anchor::Body(bad), v(1.0, 1.0), fx(0.0)),
+            Constraint::bendy_spring(Anchor::Body(a), Anchor::Body(bad), vec2(1.0, 1.0), fx(0.0)),
             &err,
         );
         assert_refused(
             &mut world,
             Constraint::radial_spring(
-                Anchor::BodyOffset(bad, v(0.5, 0.0)),
+                Anchor::BodyOffset(bad, vec2(0.5, 0.0)),
                 Anchor::Body(b),
                 fx(1.0),
                 fx(1.0),
@@ -95,23 +91,23 @@ fn out_of_range_constraints_are_invalid_and_leave_the_world_unchanged() {
         Constraint::rope(point(0.0, 5.0), Anchor::Body(a), fx(0.0)),
         Constraint::radial_spring(point(0.0, 5.0), Anchor::Body(a), fx(-0.5), fx(1.0), fx(0.0)),
         // Negative stiffness, on either axis.
-        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), v(-1.0, 1.0), fx(0.0)),
-        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), v(1.0, -1.0), fx(0.0)),
+        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), vec2(-1.0, 1.0), fx(0.0)),
+        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), vec2(1.0, -1.0), fx(0.0)),
         Constraint::radial_spring(point(0.0, 5.0), Anchor::Body(a), fx(1.0), fx(-1.0), fx(0.0)),
         // Negative damping.
-        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), v(1.0, 1.0), fx(-0.1)),
+        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), vec2(1.0, 1.0), fx(-0.1)),
         Constraint::radial_spring(point(0.0, 5.0), Anchor::Body(a), fx(1.0), fx(1.0), fx(-0.1)),
         // Stiffness above 2^24.
-        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), v(2e7, 1.0), fx(0.0)),
+        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), vec2(2e7, 1.0), fx(0.0)),
         // Restitution outside [0, 1].
         Constraint::rope(point(0.0, 5.0), Anchor::Body(a), fx(1.0)).with_restitution(fx(1.5)),
         Constraint::rope(point(0.0, 5.0), Anchor::Body(a), fx(1.0)).with_restitution(fx(-0.5)),
         // Both ends on the same body (with or without offsets).
         Constraint::rope(Anchor::Body(a), Anchor::Body(a), fx(1.0)),
         Constraint::bendy_spring(
-            Anchor::BodyOffset(b, v(0.5, 0.0)),
+            Anchor::BodyOffset(b, vec2(0.5, 0.0)),
             Anchor::Body(b),
-            v(1.0, 1.0),
+            vec2(1.0, 1.0),
             fx(0.0),
         ),
         // Two points.
@@ -121,8 +117,8 @@ fn out_of_range_constraints_are_invalid_and_leave_the_world_unchanged() {
         // A point outside the world.
         Constraint::rope(point(0.0, 40_000.0), Anchor::Body(a), fx(1.0)),
         // A rest offset outside the world.
-        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), v(1.0, 1.0), fx(0.0))
-            .with_rest_offset(v(-40_000.0, 0.0)),
+        Constraint::bendy_spring(point(0.0, 5.0), Anchor::Body(a), vec2(1.0, 1.0), fx(0.0))
+            .with_rest_offset(vec2(-40_000.0, 0.0)),
     ];
     for constraint in cases {
         assert_refused(&mut world, constraint, &invalid);
@@ -144,9 +140,9 @@ fn builders_only_touch_their_own_kind() {
     let spring =
         Constraint::radial_spring(point(0.0, 0.0), Anchor::Body(id), fx(1.0), fx(2.0), fx(0.0));
     assert_eq!(spring.with_restitution(fx(1.0)), spring);
-    assert_eq!(spring.with_rest_offset(v(1.0, 1.0)), spring);
+    assert_eq!(spring.with_rest_offset(vec2(1.0, 1.0)), spring);
     let rope = Constraint::rope(point(0.0, 0.0), Anchor::Body(id), fx(1.0));
-    assert_eq!(rope.with_rest_offset(v(1.0, 1.0)), rope);
+    assert_eq!(rope.with_rest_offset(vec2(1.0, 1.0)), rope);
     assert_eq!(rope.anchors(), (point(0.0, 0.0), Anchor::Body(id)));
 }
 
@@ -193,11 +189,11 @@ fn remove_constraint_with_a_stale_id_is_unknown_constraint() {
 fn removing_a_body_removes_its_constraints_and_wakes_partners() {
     let mut world = World::new(WorldSettings::default());
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(20.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(20.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     let boxed = |world: &mut World, x: f64| {
         world
-            .add_body(BodyDef::dynamic(Shape::aabb(v(0.5, 0.5))).position(v(x, 0.5)))
+            .add_body(BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5))).position(vec2(x, 0.5)))
             .unwrap()
     };
     let a = boxed(&mut world, -2.0);
@@ -210,7 +206,7 @@ fn removing_a_body_removes_its_constraints_and_wakes_partners() {
         .add_constraint(Constraint::bendy_spring(
             point(-2.0, 3.0),
             Anchor::Body(a),
-            v(0.0, 0.0),
+            vec2(0.0, 0.0),
             fx(0.0),
         ))
         .unwrap();
@@ -237,10 +233,10 @@ fn removing_a_body_removes_its_constraints_and_wakes_partners() {
 fn adding_a_constraint_wakes_the_bodies_it_attaches() {
     let mut world = World::new(WorldSettings::default());
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(20.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(20.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     let a = world
-        .add_body(BodyDef::dynamic(Shape::aabb(v(0.5, 0.5))).position(v(0.0, 0.5)))
+        .add_body(BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5))).position(vec2(0.0, 0.5)))
         .unwrap();
     for _ in 0..120 {
         world.step();
@@ -250,7 +246,7 @@ fn adding_a_constraint_wakes_the_bodies_it_attaches() {
         .add_constraint(Constraint::bendy_spring(
             point(3.0, 3.0),
             Anchor::Body(a),
-            v(10.0, 10.0),
+            vec2(10.0, 10.0),
             fx(1.0),
         ))
         .unwrap();
@@ -325,8 +321,8 @@ fn constraint_state_is_in_the_state_hash() {
             world
                 .add_constraint(Constraint::bendy_spring(
                     Anchor::Body(a),
-                    Anchor::BodyOffset(b, v(0.0, 0.5)),
-                    v(5.0, 5.0),
+                    Anchor::BodyOffset(b, vec2(0.0, 0.5)),
+                    vec2(5.0, 5.0),
                     fx(0.2),
                 ))
                 .unwrap();

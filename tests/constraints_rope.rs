@@ -13,40 +13,18 @@ use std::f64::consts::PI;
 
 use clockwork2d::prelude::*;
 
-/// The engine's tick, 1/60 s.
-const H: f64 = 1.0 / 60.0;
-
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
-/// Default settings with gravity `(0, -g)`; sleeping off (a pendulum is at
-/// rest for an instant at every turning point).
-fn settings(g: f64) -> WorldSettings {
-    WorldSettings {
-        gravity: v(0.0, -g),
-        sleep_enabled: false,
-        ..WorldSettings::default()
-    }
-}
+mod common;
+use common::oscillators::{H, pos, settings, vel};
 
 fn ball(world: &mut World, radius: f64, mass: f64, p: (f64, f64), vel: (f64, f64)) -> BodyId {
     world
         .add_body(
             BodyDef::dynamic(Shape::circle(fx(radius)))
                 .mass(fx(mass))
-                .position(v(p.0, p.1))
-                .velocity(v(vel.0, vel.1)),
+                .position(vec2(p.0, p.1))
+                .velocity(vec2(vel.0, vel.1)),
         )
         .expect("ball")
-}
-
-fn pos(world: &World, id: BodyId) -> (f64, f64) {
-    world.body(id).expect("live body").position().to_f64()
-}
-
-fn vel(world: &World, id: BodyId) -> (f64, f64) {
-    world.body(id).expect("live body").velocity().to_f64()
 }
 
 fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
@@ -457,14 +435,14 @@ fn rope_restitution_0_removes_radial_velocity_and_keeps_tangential() {
 #[test]
 fn rope_and_ground_together_bob_rests_on_ground_without_penetrating_or_overstretching() {
     let mut world = World::new(WorldSettings {
-        gravity: v(2.0, -10.0),
+        gravity: vec2(2.0, -10.0),
         ..WorldSettings::default()
     });
     world
         .add_body(
-            BodyDef::fixed(Shape::aabb(v(10.0, 0.5)))
+            BodyDef::fixed(Shape::aabb(vec2(10.0, 0.5)))
                 .friction(fx(0.1))
-                .position(v(0.0, -0.5)),
+                .position(vec2(0.0, -0.5)),
         )
         .unwrap();
     let pivot = (0.0, 2.0);
@@ -473,12 +451,12 @@ fn rope_and_ground_together_bob_rests_on_ground_without_penetrating_or_overstret
             BodyDef::dynamic(Shape::circle(fx(0.25)))
                 .mass(fx(1.0))
                 .friction(fx(0.1))
-                .position(v(0.2, 0.25)),
+                .position(vec2(0.2, 0.25)),
         )
         .unwrap();
     world
         .add_constraint(Constraint::rope(
-            Anchor::Point(v(pivot.0, pivot.1)),
+            Anchor::Point(vec2(pivot.0, pivot.1)),
             Anchor::Body(bob),
             fx(1.8),
         ))

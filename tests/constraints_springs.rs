@@ -21,23 +21,8 @@ use std::f64::consts::PI;
 
 use clockwork2d::prelude::*;
 
-/// The engine's tick, 1/60 s.
-const H: f64 = 1.0 / 60.0;
-
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
-/// Default settings with gravity `(0, -g)` and sleeping off (an oscillator
-/// passes through zero velocity at every turning point; it must never be put
-/// to sleep there).
-fn settings(g: f64) -> WorldSettings {
-    WorldSettings {
-        gravity: v(0.0, -g),
-        sleep_enabled: false,
-        ..WorldSettings::default()
-    }
-}
+mod common;
+use common::oscillators::{H, pos, settings, vel};
 
 /// A dynamic circle of radius 0.1 with the given mass, position and velocity.
 fn ball(world: &mut World, mass: f64, p: (f64, f64), vel: (f64, f64)) -> BodyId {
@@ -45,18 +30,10 @@ fn ball(world: &mut World, mass: f64, p: (f64, f64), vel: (f64, f64)) -> BodyId 
         .add_body(
             BodyDef::dynamic(Shape::circle(fx(0.1)))
                 .mass(fx(mass))
-                .position(v(p.0, p.1))
-                .velocity(v(vel.0, vel.1)),
+                .position(vec2(p.0, p.1))
+                .velocity(vec2(vel.0, vel.1)),
         )
         .expect("ball")
-}
-
-fn pos(world: &World, id: BodyId) -> (f64, f64) {
-    world.body(id).expect("live body").position().to_f64()
-}
-
-fn vel(world: &World, id: BodyId) -> (f64, f64) {
-    world.body(id).expect("live body").velocity().to_f64()
 }
 
 /// Steps `n` ticks, recording `f(world)` before the first step and after
@@ -165,7 +142,7 @@ fn bendy_spring_omega_h_0_1_period_within_0_5_percent_amplitude_within_1_percent
         .add_constraint(Constraint::bendy_spring(
             Anchor::Point(Vec2::ZERO),
             Anchor::Body(body),
-            v(36.0, 36.0),
+            vec2(36.0, 36.0),
             fx(0.0),
         ))
         .unwrap();
@@ -214,7 +191,7 @@ fn stiff_spring_omega_h_10_never_exceeds_initial_amplitude_over_10000_steps() {
         .add_constraint(Constraint::bendy_spring(
             Anchor::Point(Vec2::ZERO),
             Anchor::Body(body),
-            v(k, k),
+            vec2(k, k),
             fx(0.0),
         ))
         .unwrap();
@@ -269,7 +246,7 @@ fn damped_spring_zeta_0_1_decay_rate_within_2_percent_of_zeta_omega() {
         .add_constraint(Constraint::bendy_spring(
             Anchor::Point(Vec2::ZERO),
             Anchor::Body(body),
-            v(omega * omega, omega * omega),
+            vec2(omega * omega, omega * omega),
             fx(c),
         ))
         .unwrap();
@@ -479,7 +456,7 @@ fn radial_spring_body_at_pivot_is_pushed_along_plus_y_without_panic() {
     let body = ball(&mut world, 1.0, (3.0, 4.0), (0.0, 0.0));
     world
         .add_constraint(Constraint::radial_spring(
-            Anchor::Point(v(3.0, 4.0)),
+            Anchor::Point(vec2(3.0, 4.0)),
             Anchor::Body(body),
             fx(1.0),
             fx(16.0),
@@ -549,12 +526,12 @@ fn bendy_spring_axes_are_independent_and_centred_on_anchor_plus_rest_offset() {
     world
         .add_constraint(
             Constraint::bendy_spring(
-                Anchor::Point(v(3.0, 2.0)),
+                Anchor::Point(vec2(3.0, 2.0)),
                 Anchor::Body(body),
-                v(kx, ky),
+                vec2(kx, ky),
                 fx(0.0),
             )
-            .with_rest_offset(v(0.5, -0.25)),
+            .with_rest_offset(vec2(0.5, -0.25)),
         )
         .unwrap();
     let steps = (20.0 * 2.0 * PI / 4.0 / H) as usize;
@@ -599,8 +576,8 @@ fn bendy_spring_between_two_bodies_settles_at_the_rest_offset() {
     let b = ball(&mut world, 2.0, (3.0, 2.0), (0.0, 0.0));
     world
         .add_constraint(
-            Constraint::bendy_spring(Anchor::Body(a), Anchor::Body(b), v(20.0, 20.0), fx(4.0))
-                .with_rest_offset(v(1.0, -0.5)),
+            Constraint::bendy_spring(Anchor::Body(a), Anchor::Body(b), vec2(20.0, 20.0), fx(4.0))
+                .with_rest_offset(vec2(1.0, -0.5)),
         )
         .unwrap();
     for _ in 0..600 {
@@ -626,12 +603,12 @@ fn bendy_spring_under_gravity_settles_at_rest_offset_minus_mg_over_k() {
     world
         .add_constraint(
             Constraint::bendy_spring(
-                Anchor::Point(v(0.0, 5.0)),
+                Anchor::Point(vec2(0.0, 5.0)),
                 Anchor::Body(body),
-                v(50.0, 50.0),
+                vec2(50.0, 50.0),
                 fx(10.0),
             )
-            .with_rest_offset(v(0.0, -1.0)),
+            .with_rest_offset(vec2(0.0, -1.0)),
         )
         .unwrap();
     for _ in 0..900 {

@@ -32,7 +32,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::{add_ground, v};
+use common::add_ground;
 
 const G: f64 = 10.0;
 const DT: f64 = 1.0 / 60.0;
@@ -83,12 +83,12 @@ fn drop(shape: Dropped, height: f64, e: f64, substeps: u32, seconds: f64) -> Dro
     add_ground(&mut w);
     let s = match shape {
         Dropped::Circle => Shape::circle(fx(HALF)),
-        Dropped::Box => Shape::aabb(v(HALF, HALF)),
+        Dropped::Box => Shape::aabb(vec2(HALF, HALF)),
     };
     let id = w
         .add_body(
             BodyDef::dynamic(s)
-                .position(v(0.0, height + HALF))
+                .position(vec2(0.0, height + HALF))
                 .restitution(fx(e)),
         )
         .unwrap();

@@ -17,7 +17,6 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::v;
 
 const WALL: f64 = 2.0;
 
@@ -28,12 +27,14 @@ fn container(world: &mut World, half_w: f64, height: f64) {
     // Floor and ceiling span the full outer width.
     for y in [-t, height + t] {
         world
-            .add_body(BodyDef::fixed(Shape::aabb(v(half_w + WALL, t))).position(v(0.0, y)))
+            .add_body(BodyDef::fixed(Shape::aabb(vec2(half_w + WALL, t))).position(vec2(0.0, y)))
             .unwrap();
     }
     for x in [-half_w - t, half_w + t] {
         world
-            .add_body(BodyDef::fixed(Shape::aabb(v(t, height / 2.0))).position(v(x, height / 2.0)))
+            .add_body(
+                BodyDef::fixed(Shape::aabb(vec2(t, height / 2.0))).position(vec2(x, height / 2.0)),
+            )
             .unwrap();
     }
 }
@@ -127,7 +128,7 @@ fn crowd(shapes: &[Shape], half_w: f64, height: f64, spawn: (f64, f64)) -> Outco
         .iter()
         .map(|&s| {
             world
-                .add_body(BodyDef::dynamic(s).position(v(spawn.0, spawn.1)))
+                .add_body(BodyDef::dynamic(s).position(vec2(spawn.0, spawn.1)))
                 .unwrap()
         })
         .collect();
@@ -191,7 +192,7 @@ fn five_hundred_coincident_circles_stay_in_their_container() {
 
 #[test]
 fn two_hundred_coincident_boxes_stay_in_their_container() {
-    let shapes = vec![Shape::aabb(v(0.2, 0.2)); 200];
+    let shapes = vec![Shape::aabb(vec2(0.2, 0.2)); 200];
     let o = crowd(&shapes, 6.0, 12.0, (0.0, 6.0));
     check("200 coincident boxes 0.4×0.4", &o);
 }
@@ -203,8 +204,8 @@ fn coincident_crowd_variants_stay_in_their_container() {
     let mixed: Vec<Shape> = (0..150)
         .map(|i| match i % 3 {
             0 => Shape::circle(fx(0.1 + 0.02 * f64::from(i % 5))),
-            1 => Shape::aabb(v(0.15, 0.1)),
-            _ => Shape::aabb(v(0.12, 0.2)),
+            1 => Shape::aabb(vec2(0.15, 0.1)),
+            _ => Shape::aabb(vec2(0.12, 0.2)),
         })
         .collect();
     let o = crowd(&mixed, 5.0, 8.0, (0.0, 4.0));
@@ -212,7 +213,7 @@ fn coincident_crowd_variants_stay_in_their_container() {
     let circles = vec![Shape::circle(fx(0.2)); 120];
     let o = crowd(&circles, 4.0, 6.0, (-3.8, 0.2));
     check("120 circles spawned in the bottom-left corner", &o);
-    let boxes = vec![Shape::aabb(v(0.25, 0.25)); 30];
+    let boxes = vec![Shape::aabb(vec2(0.25, 0.25)); 30];
     // A corner crowd of boxes spreads along the two walls; the column
     // along the side wall must fit under the ceiling (30 boxes may all go
     // up the wall: 7.5 units). Boxes cannot rotate, and a column of boxes
@@ -240,7 +241,8 @@ fn coincident_pairs_separate_in_spread_directions() {
         for k in 0..extra {
             world
                 .add_body(
-                    BodyDef::fixed(Shape::circle(fx(0.1))).position(v(50.0 + f64::from(k), 50.0)),
+                    BodyDef::fixed(Shape::circle(fx(0.1)))
+                        .position(vec2(50.0 + f64::from(k), 50.0)),
                 )
                 .unwrap();
         }

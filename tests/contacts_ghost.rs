@@ -13,7 +13,6 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::v;
 
 const DT: f64 = 1.0 / 60.0;
 
@@ -74,14 +73,14 @@ fn ball_under_a_box_is_not_stopped_at_any_speed() {
     for speed in [2000.0, 60.0, 4096.0] {
         for bullet in [false, true] {
             let mut w = zero_gravity();
-            w.add_body(BodyDef::fixed(Shape::aabb(v(1.0, 1.0))).position(v(50.0, 1.13)))
+            w.add_body(BodyDef::fixed(Shape::aabb(vec2(1.0, 1.0))).position(vec2(50.0, 1.13)))
                 .unwrap();
             let ticks = ((15.0 / (speed * DT)).ceil() as usize).max(3) + 2;
             let (ok, drift) = passes(
                 &mut w,
                 Shape::circle(fx(0.05)),
-                v(40.0, 0.0),
-                v(speed, 0.0),
+                vec2(40.0, 0.0),
+                vec2(speed, 0.0),
                 bullet,
                 ticks,
             );
@@ -108,7 +107,7 @@ fn clearance_sweep_past_a_corner_is_never_touched() {
             for bullet in [false, true] {
                 for (shape, half) in [
                     (Shape::circle(fx(0.05)), 0.05),
-                    (Shape::aabb(v(0.05, 0.05)), 0.05),
+                    (Shape::aabb(vec2(0.05, 0.05)), 0.05),
                 ] {
                     // Box half 1 at the origin: bottom face y = -1, corner
                     // (1, -1). The shot ends 1.5 past the far side.
@@ -117,13 +116,13 @@ fn clearance_sweep_past_a_corner_is_never_touched() {
                     let start_x = -1.0 - half - (2.5 * speed * DT).max(0.3);
                     let ticks = ((3.0 - start_x) / (speed * DT)).ceil() as usize + 1;
                     let mut w = zero_gravity();
-                    w.add_body(BodyDef::fixed(Shape::aabb(v(1.0, 1.0))))
+                    w.add_body(BodyDef::fixed(Shape::aabb(vec2(1.0, 1.0))))
                         .unwrap();
                     let (ok, drift) = passes(
                         &mut w,
                         shape,
-                        v(start_x, y),
-                        v(speed, 0.0),
+                        vec2(start_x, y),
+                        vec2(speed, 0.0),
                         bullet,
                         ticks.min(400),
                     );
@@ -149,13 +148,13 @@ fn clearance_sweep_past_a_corner_is_never_touched() {
                     let diag_speed = speed / 2f64.sqrt();
                     let ticks = ((2.0 * back + 2.0) / (diag_speed * DT)).ceil() as usize + 1;
                     let mut w = zero_gravity();
-                    w.add_body(BodyDef::fixed(Shape::aabb(v(1.0, 1.0))))
+                    w.add_body(BodyDef::fixed(Shape::aabb(vec2(1.0, 1.0))))
                         .unwrap();
                     let (ok, drift) = passes(
                         &mut w,
                         shape,
-                        v(cx, cy),
-                        v(diag_speed, diag_speed),
+                        vec2(cx, cy),
+                        vec2(diag_speed, diag_speed),
                         bullet,
                         ticks.min(400),
                     );
@@ -203,8 +202,8 @@ fn passing_a_circle_with_clearance_is_never_touched() {
                 let (ok, _) = passes(
                     &mut w,
                     Shape::circle(fx(0.05)),
-                    v(start_x, y),
-                    v(speed, 0.0),
+                    vec2(start_x, y),
+                    vec2(speed, 0.0),
                     false,
                     ticks,
                 );
@@ -232,11 +231,13 @@ fn bullet_through_an_open_gap_passes() {
                 let mut w = zero_gravity();
                 // Two boxes 2 tall, the gap between y = -gap/2 and gap/2.
                 w.add_body(
-                    BodyDef::fixed(Shape::aabb(v(0.5, 1.0))).position(v(10.0, gap / 2.0 + 1.0)),
+                    BodyDef::fixed(Shape::aabb(vec2(0.5, 1.0)))
+                        .position(vec2(10.0, gap / 2.0 + 1.0)),
                 )
                 .unwrap();
                 w.add_body(
-                    BodyDef::fixed(Shape::aabb(v(0.5, 1.0))).position(v(10.0, -gap / 2.0 - 1.0)),
+                    BodyDef::fixed(Shape::aabb(vec2(0.5, 1.0)))
+                        .position(vec2(10.0, -gap / 2.0 - 1.0)),
                 )
                 .unwrap();
                 let r = 0.05;
@@ -246,8 +247,8 @@ fn bullet_through_an_open_gap_passes() {
                 let (ok, drift) = passes(
                     &mut w,
                     Shape::circle(fx(r)),
-                    v(0.0, y),
-                    v(speed, 0.0),
+                    vec2(0.0, y),
+                    vec2(speed, 0.0),
                     true,
                     ticks,
                 );

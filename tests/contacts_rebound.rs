@@ -12,7 +12,6 @@ mod common;
 
 use clockwork2d::prelude::*;
 use clockwork2d::world::MAX_BULLET_IMPACTS;
-use common::v;
 
 const DT: f64 = 1.0 / 60.0;
 
@@ -48,15 +47,15 @@ fn corridor(
     });
     for x in [left, right] {
         world
-            .add_body(BodyDef::fixed(Shape::aabb(v(half_thickness, 2.0))).position(v(x, 0.0)))
+            .add_body(BodyDef::fixed(Shape::aabb(vec2(half_thickness, 2.0))).position(vec2(x, 0.0)))
             .unwrap();
     }
     // A floor and ceiling close the corridor for shots with gravity.
     for y in [-2.1, 2.1] {
         world
             .add_body(
-                BodyDef::fixed(Shape::aabb(v((right - left) / 2.0 + 1.0, 0.1)))
-                    .position(v((left + right) / 2.0, y)),
+                BodyDef::fixed(Shape::aabb(vec2((right - left) / 2.0 + 1.0, 0.1)))
+                    .position(vec2((left + right) / 2.0, y)),
             )
             .unwrap();
     }
@@ -126,8 +125,8 @@ fn rebound_between_two_walls_never_passes_either_wall() {
             0.1,
             Shape::circle(fx(0.05)),
             0.05,
-            v(0.0, 0.0),
-            v(600.0, 0.0),
+            vec2(0.0, 0.0),
+            vec2(600.0, 0.0),
             bullet,
             0.0,
         );
@@ -176,7 +175,7 @@ fn unfolded(x: f64, vx: f64, lo: f64, hi: f64) -> f64 {
 fn bullet_between_walls_one_apart_never_escapes() {
     for (speed, shape, half_x, label) in [
         (1000.0, Shape::circle(fx(0.05)), 0.05, "circle r 0.05"),
-        (1000.0, Shape::aabb(v(0.05, 0.05)), 0.05, "box 0.1×0.1"),
+        (1000.0, Shape::aabb(vec2(0.05, 0.05)), 0.05, "box 0.1×0.1"),
         (400.0, Shape::circle(fx(0.05)), 0.05, "circle r 0.05"),
         (2500.0, Shape::circle(fx(0.1)), 0.1, "circle r 0.1"),
     ] {
@@ -187,8 +186,8 @@ fn bullet_between_walls_one_apart_never_escapes() {
             0.1,
             shape,
             half_x,
-            v(0.0, 0.0),
-            v(speed, 0.0),
+            vec2(0.0, 0.0),
+            vec2(speed, 0.0),
             true,
             0.0,
         );
@@ -254,7 +253,7 @@ fn rebound_variants_stay_inside() {
             for (shape, half_x) in [
                 (Shape::circle(fx(0.05)), 0.05),
                 (Shape::circle(fx(0.12)), 0.12),
-                (Shape::aabb(v(0.08, 0.03)), 0.08),
+                (Shape::aabb(vec2(0.08, 0.03)), 0.08),
             ] {
                 for (gravity_scale, vy) in [(0.0, 0.0), (1.0, 0.0), (0.0, 0.3)] {
                     let mut c = corridor(
@@ -263,8 +262,8 @@ fn rebound_variants_stay_inside() {
                         0.1,
                         shape,
                         half_x,
-                        v(0.0, 0.0),
-                        v(speed, vy * speed),
+                        vec2(0.0, 0.0),
+                        vec2(speed, vy * speed),
                         true,
                         gravity_scale,
                     );

@@ -38,6 +38,9 @@ use fixed::types::I48F16;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
+mod common;
+use common::fx_strategies::{positive, scaled};
+
 /// Cases per property: 16× proptest's default of 256. One case is a few
 /// hundred scalar operations plus 33 sampled points, so all the properties
 /// of this file take well under a second, in release and in the debug test
@@ -73,10 +76,6 @@ const TOL_ALONG: f64 = 4.0 * ULP;
 // Helpers.
 // ---------------------------------------------------------------------------
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 fn p64(p: Vec2) -> (f64, f64) {
     p.to_f64()
 }
@@ -105,23 +104,6 @@ fn segment_distance(r: &Ray, max: f64, c: (f64, f64)) -> f64 {
     let dd = dx * dx + dy * dy;
     let s = (((c.0 - ox) * dx + (c.1 - oy) * dy) / dd).clamp(0.0, max);
     dist((ox + s * dx, oy + s * dy), c)
-}
-
-/// Full-precision `Fx` in `[-2^e, 2^e]` (raw bits), `e` drawn from a range:
-/// every magnitude from tiny to large, every fraction bit live.
-fn scaled(exps: core::ops::Range<i32>) -> impl Strategy<Value = Fx> {
-    (exps, -(1i64 << 32)..=(1i64 << 32)).prop_map(|(e, m)| {
-        let raw = if e >= 0 { m << e } else { m >> -e };
-        Fx::from_bits(raw)
-    })
-}
-
-/// A positive full-precision `Fx` around `2^e`.
-fn positive(exps: core::ops::Range<i32>) -> impl Strategy<Value = Fx> {
-    (exps, (1i64 << 31)..=(1i64 << 32)).prop_map(|(e, m)| {
-        let raw = if e >= 0 { m << e } else { m >> -e };
-        Fx::from_bits(raw.max(1))
-    })
 }
 
 /// A coordinate anywhere in the world, ±2¹⁵ with all 32 fraction bits.
@@ -582,16 +564,16 @@ proptest! {
 
 #[test]
 fn circle_head_on_exact() {
-    let c = Circle::new(v(10.0, 0.0), fx(2.0));
-    let h = ray_circle(&ray(v(0.0, 0.0), v(1.0, 0.0), 100.0), &c).unwrap();
+    let c = Circle::new(vec2(10.0, 0.0), fx(2.0));
+    let h = ray_circle(&ray(vec2(0.0, 0.0), vec2(1.0, 0.0), 100.0), &c).unwrap();
     assert_eq!(h.distance, fx(8.0));
-    assert_eq!(h.point, v(8.0, 0.0));
-    assert_eq!(h.normal, v(-1.0, 0.0));
+    assert_eq!(h.point, vec2(8.0, 0.0));
+    assert_eq!(h.normal, vec2(-1.0, 0.0));
     // Coming down onto the top.
-    let h = ray_circle(&ray(v(10.0, 7.0), v(0.0, -3.0), 100.0), &c).unwrap();
+    let h = ray_circle(&ray(vec2(10.0, 7.0), vec2(0.0, -3.0), 100.0), &c).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (fx(5.0), v(10.0, 2.0), v(0.0, 1.0))
+        (fx(5.0), vec2(10.0, 2.0), vec2(0.0, 1.0))
     );
 }
 
@@ -601,8 +583,8 @@ fn circle_oblique_3_4_5() {
     // radius 5: |m| = 10, so the hit is at distance 5, the point (3, 4),
     // the normal (−0.6, −0.8).
     let h = ray_circle(
-        &ray(v(0.0, 0.0), v(3.0, 4.0), 100.0),
-        &Circle::new(v(6.0, 8.0), fx(5.0)),
+        &ray(vec2(0.0, 0.0), vec2(3.0, 4.0), 100.0),
+        &Circle::new(vec2(6.0, 8.0), fx(5.0)),
     )
     .unwrap();
     assert!((h.distance.to_f64() - 5.0).abs() < 8.0 * ULP);
@@ -614,8 +596,8 @@ fn circle_oblique_3_4_5() {
 fn circle_off_axis() {
     // Ray along +x at height 0.6 against the unit circle: enters at
     // x = −0.8, so from x = −10 the distance is 9.2, normal (−0.8, 0.6).
-    let r = ray(v(-10.0, 0.6), v(1.0, 0.0), 100.0);
-    let h = ray_circle(&r, &Circle::new(v(0.0, 0.0), fx(1.0))).unwrap();
+    let r = ray(vec2(-10.0, 0.6), vec2(1.0, 0.0), 100.0);
+    let h = ray_circle(&r, &Circle::new(vec2(0.0, 0.0), fx(1.0))).unwrap();
     // 0.6 is not exact in Fx (error < 2⁻³³): the hit moves by about
     // (0.6/0.8)·2⁻³³ plus the solver's few ulps.
     assert!((h.distance.to_f64() - 9.2).abs() < 8.0 * ULP);
@@ -624,59 +606,71 @@ fn circle_off_axis() {
 
 #[test]
 fn circle_tangent_and_just_missing() {
-    let c = Circle::new(v(0.0, 0.0), fx(1.0));
+    let c = Circle::new(vec2(0.0, 0.0), fx(1.0));
     // Tangent at (0, 1): a hit (the closed circle is touched), exactly.
-    let h = ray_circle(&ray(v(-5.0, 1.0), v(1.0, 0.0), 100.0), &c).unwrap();
+    let h = ray_circle(&ray(vec2(-5.0, 1.0), vec2(1.0, 0.0), 100.0), &c).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (fx(5.0), v(0.0, 1.0), v(0.0, 1.0))
+        (fx(5.0), vec2(0.0, 1.0), vec2(0.0, 1.0))
     );
     assert_eq!(
-        ray_circle_roots(&ray(v(-5.0, 1.0), v(1.0, 0.0), 1.0), &c),
+        ray_circle_roots(&ray(vec2(-5.0, 1.0), vec2(1.0, 0.0), 1.0), &c),
         Some((fx(5.0), fx(5.0)))
     );
     // One ulp higher: the line misses.
     let above = Vec2::new(fx(-5.0), Fx::ONE + Fx::DELTA);
-    assert_eq!(ray_circle(&ray(above, v(1.0, 0.0), 100.0), &c), None);
-    assert_eq!(ray_circle_roots(&ray(above, v(1.0, 0.0), 100.0), &c), None);
+    assert_eq!(ray_circle(&ray(above, vec2(1.0, 0.0), 100.0), &c), None);
+    assert_eq!(
+        ray_circle_roots(&ray(above, vec2(1.0, 0.0), 100.0), &c),
+        None
+    );
 }
 
 #[test]
 fn circle_max_distance_is_inclusive() {
-    let c = Circle::new(v(10.0, 0.0), fx(2.0));
-    assert!(ray_circle(&ray(v(0.0, 0.0), v(1.0, 0.0), 8.0), &c).is_some());
-    let short = Ray::new(v(0.0, 0.0), v(1.0, 0.0), fx(8.0) - Fx::DELTA).unwrap();
+    let c = Circle::new(vec2(10.0, 0.0), fx(2.0));
+    assert!(ray_circle(&ray(vec2(0.0, 0.0), vec2(1.0, 0.0), 8.0), &c).is_some());
+    let short = Ray::new(vec2(0.0, 0.0), vec2(1.0, 0.0), fx(8.0) - Fx::DELTA).unwrap();
     assert_eq!(ray_circle(&short, &c), None);
     // A zero max distance from outside: nothing.
-    assert_eq!(ray_circle(&ray(v(0.0, 0.0), v(1.0, 0.0), 0.0), &c), None);
+    assert_eq!(
+        ray_circle(&ray(vec2(0.0, 0.0), vec2(1.0, 0.0), 0.0), &c),
+        None
+    );
 }
 
 #[test]
 fn circle_inside_and_on_surface_is_solid() {
-    let c = Circle::new(v(0.0, 0.0), fx(1.0));
+    let c = Circle::new(vec2(0.0, 0.0), fx(1.0));
     for (o, d) in [
-        (v(0.0, 0.0), v(1.0, 0.0)),   // centre
-        (v(0.5, 0.25), v(-1.0, 2.0)), // inside
-        (v(1.0, 0.0), v(1.0, 0.0)),   // on the surface, leaving
-        (v(0.0, -1.0), v(0.0, 1.0)),  // on the surface, entering
+        (vec2(0.0, 0.0), vec2(1.0, 0.0)),   // centre
+        (vec2(0.5, 0.25), vec2(-1.0, 2.0)), // inside
+        (vec2(1.0, 0.0), vec2(1.0, 0.0)),   // on the surface, leaving
+        (vec2(0.0, -1.0), vec2(0.0, 1.0)),  // on the surface, entering
     ] {
         let r = ray(o, d, 5.0);
         let h = ray_circle(&r, &c).unwrap();
         assert_eq!((h.distance, h.point, h.normal), (Fx::ZERO, o, -r.direction));
     }
     // Roots from inside straddle the origin.
-    let (t0, t1) = ray_circle_roots(&ray(v(0.5, 0.0), v(1.0, 0.0), 1.0), &c).unwrap();
+    let (t0, t1) = ray_circle_roots(&ray(vec2(0.5, 0.0), vec2(1.0, 0.0), 1.0), &c).unwrap();
     assert_eq!((t0, t1), (fx(-1.5), fx(0.5)));
 }
 
 #[test]
 fn circle_pointing_away_or_behind() {
-    let c = Circle::new(v(10.0, 0.0), fx(2.0));
-    assert_eq!(ray_circle(&ray(v(0.0, 0.0), v(-1.0, 0.0), 100.0), &c), None);
+    let c = Circle::new(vec2(10.0, 0.0), fx(2.0));
+    assert_eq!(
+        ray_circle(&ray(vec2(0.0, 0.0), vec2(-1.0, 0.0), 100.0), &c),
+        None
+    );
     // Perpendicular at the closest point (m·d = 0): moving away.
-    assert_eq!(ray_circle(&ray(v(10.0, 5.0), v(1.0, 0.0), 100.0), &c), None);
+    assert_eq!(
+        ray_circle(&ray(vec2(10.0, 5.0), vec2(1.0, 0.0), 100.0), &c),
+        None
+    );
     // Behind: the roots are negative.
-    let (t0, t1) = ray_circle_roots(&ray(v(20.0, 0.0), v(1.0, 0.0), 1.0), &c).unwrap();
+    let (t0, t1) = ray_circle_roots(&ray(vec2(20.0, 0.0), vec2(1.0, 0.0), 1.0), &c).unwrap();
     assert_eq!((t0, t1), (fx(-12.0), fx(-8.0)));
 }
 
@@ -684,15 +678,15 @@ fn circle_pointing_away_or_behind() {
 fn circle_long_ray_across_the_world() {
     // From the left edge of the world to a small circle at the right edge,
     // 65 534 units away: exact, because the direction is exactly +x.
-    let c = Circle::new(v(32_767.0, 0.0), fx(0.5));
-    let r = ray(v(-32_768.0, 0.0), v(1.0, 0.0), 131_072.0);
+    let c = Circle::new(vec2(32_767.0, 0.0), fx(0.5));
+    let r = ray(vec2(-32_768.0, 0.0), vec2(1.0, 0.0), 131_072.0);
     assert_eq!(ray_circle_roots(&r, &c), Some((fx(65_534.5), fx(65_535.5))));
     let h = ray_circle(&r, &c).unwrap();
-    assert_eq!((h.distance, h.point), (fx(65_534.5), v(32_766.5, 0.0)));
+    assert_eq!((h.distance, h.point), (fx(65_534.5), vec2(32_766.5, 0.0)));
     // Diagonally across the whole world (|m| = 2^16·√2 ≈ 92 682, m·m =
     // 2^33 beyond the narrow range: formed in the wide type).
-    let c = Circle::new(v(32_767.0, 32_767.0), fx(1.0));
-    let r = ray(v(-32_768.0, -32_768.0), v(1.0, 1.0), 131_072.0);
+    let c = Circle::new(vec2(32_767.0, 32_767.0), fx(1.0));
+    let r = ray(vec2(-32_768.0, -32_768.0), vec2(1.0, 1.0), 131_072.0);
     check_ray_circle(&r, &c).unwrap();
     let h = ray_circle(&r, &c).unwrap();
     let expect = 65_535.0 * 2f64.sqrt() - 1.0;
@@ -710,17 +704,41 @@ fn circle_long_ray_across_the_world() {
 // ---------------------------------------------------------------------------
 
 fn unit_box() -> Aabb {
-    Aabb::new(v(0.0, 0.0), v(1.0, 1.0))
+    Aabb::new(vec2(0.0, 0.0), vec2(1.0, 1.0))
 }
 
 #[test]
 fn aabb_each_face() {
-    let b = Aabb::new(v(0.0, 0.0), v(2.0, 1.0));
+    let b = Aabb::new(vec2(0.0, 0.0), vec2(2.0, 1.0));
     for (o, d, dist_, point, normal) in [
-        (v(-5.0, 0.5), v(1.0, 0.0), 3.0, v(-2.0, 0.5), v(-1.0, 0.0)),
-        (v(5.0, -0.5), v(-1.0, 0.0), 3.0, v(2.0, -0.5), v(1.0, 0.0)),
-        (v(1.5, -4.0), v(0.0, 1.0), 3.0, v(1.5, -1.0), v(0.0, -1.0)),
-        (v(-1.5, 4.0), v(0.0, -1.0), 3.0, v(-1.5, 1.0), v(0.0, 1.0)),
+        (
+            vec2(-5.0, 0.5),
+            vec2(1.0, 0.0),
+            3.0,
+            vec2(-2.0, 0.5),
+            vec2(-1.0, 0.0),
+        ),
+        (
+            vec2(5.0, -0.5),
+            vec2(-1.0, 0.0),
+            3.0,
+            vec2(2.0, -0.5),
+            vec2(1.0, 0.0),
+        ),
+        (
+            vec2(1.5, -4.0),
+            vec2(0.0, 1.0),
+            3.0,
+            vec2(1.5, -1.0),
+            vec2(0.0, -1.0),
+        ),
+        (
+            vec2(-1.5, 4.0),
+            vec2(0.0, -1.0),
+            3.0,
+            vec2(-1.5, 1.0),
+            vec2(0.0, 1.0),
+        ),
     ] {
         let r = ray(o, d, 10.0);
         let h = ray_aabb(&r, &b).unwrap();
@@ -735,15 +753,15 @@ fn aabb_oblique() {
     // (3, 4)/5: in the y slab for t ∈ [0, 2.5], in the x slab for
     // t ∈ [5, 8.33]: the intervals are disjoint, a miss (passing above the
     // box's top-left corner).
-    let r = ray(v(-4.0, -1.0), v(3.0, 4.0), 10.0);
+    let r = ray(vec2(-4.0, -1.0), vec2(3.0, 4.0), 10.0);
     assert_eq!(ray_aabb(&r, &unit_box()), None);
     check_ray_aabb(&r, &unit_box()).unwrap();
     // From (−3, −1.5) along (4, 3)/5: reaches x = −1 at t = 2.5 (y = 0):
     // the left face.
-    let r = ray(v(-3.0, -1.5), v(4.0, 3.0), 10.0);
+    let r = ray(vec2(-3.0, -1.5), vec2(4.0, 3.0), 10.0);
     let h = ray_aabb(&r, &unit_box()).unwrap();
     assert!((h.distance.to_f64() - 2.5).abs() < 4.0 * ULP);
-    assert_eq!(h.normal, v(-1.0, 0.0));
+    assert_eq!(h.normal, vec2(-1.0, 0.0));
     assert_eq!(h.point.x, fx(-1.0));
     assert!(h.point.y.to_f64().abs() < 4.0 * ULP);
     check_ray_aabb(&r, &unit_box()).unwrap();
@@ -752,17 +770,21 @@ fn aabb_oblique() {
 #[test]
 fn aabb_corner_tie_picks_y() {
     // Exactly through the corner (−1, −1) from (−3, −3): y face.
-    let r = ray(v(-3.0, -3.0), v(1.0, 1.0), 10.0);
+    let r = ray(vec2(-3.0, -3.0), vec2(1.0, 1.0), 10.0);
     let h = ray_aabb(&r, &unit_box()).unwrap();
-    assert_eq!(h.normal, v(0.0, -1.0));
-    assert_eq!(h.point, v(-1.0, -1.0));
+    assert_eq!(h.normal, vec2(0.0, -1.0));
+    assert_eq!(h.point, vec2(-1.0, -1.0));
     // Through (1, 1) from (3, 3): y face, normal +Y.
-    let h = ray_aabb(&ray(v(3.0, 3.0), v(-1.0, -1.0), 10.0), &unit_box()).unwrap();
-    assert_eq!((h.normal, h.point), (v(0.0, 1.0), v(1.0, 1.0)));
+    let h = ray_aabb(&ray(vec2(3.0, 3.0), vec2(-1.0, -1.0), 10.0), &unit_box()).unwrap();
+    assert_eq!((h.normal, h.point), (vec2(0.0, 1.0), vec2(1.0, 1.0)));
     // One ulp to the side, the x face wins: from (−3 − ulp, −3) the x entry
     // comes later.
-    let r = ray(Vec2::new(fx(-3.0) - Fx::DELTA, fx(-3.0)), v(1.0, 1.0), 10.0);
-    assert_eq!(ray_aabb(&r, &unit_box()).unwrap().normal, v(-1.0, 0.0));
+    let r = ray(
+        Vec2::new(fx(-3.0) - Fx::DELTA, fx(-3.0)),
+        vec2(1.0, 1.0),
+        10.0,
+    );
+    assert_eq!(ray_aabb(&r, &unit_box()).unwrap().normal, vec2(-1.0, 0.0));
 }
 
 #[test]
@@ -770,52 +792,62 @@ fn aabb_axis_parallel_zero_components() {
     let b = unit_box();
     // Inside the y slab (boundary included), moving along x: hit.
     for y in [-1.0, -0.5, 0.0, 1.0] {
-        let h = ray_aabb(&ray(v(-3.0, y), v(1.0, 0.0), 10.0), &b).unwrap();
+        let h = ray_aabb(&ray(vec2(-3.0, y), vec2(1.0, 0.0), 10.0), &b).unwrap();
         assert_eq!(
             (h.distance, h.point, h.normal),
-            (fx(2.0), v(-1.0, y), v(-1.0, 0.0))
+            (fx(2.0), vec2(-1.0, y), vec2(-1.0, 0.0))
         );
     }
     // Outside the slab by one ulp: miss, no division by zero anywhere.
-    let r = ray(Vec2::new(fx(-3.0), Fx::ONE + Fx::DELTA), v(1.0, 0.0), 10.0);
+    let r = ray(
+        Vec2::new(fx(-3.0), Fx::ONE + Fx::DELTA),
+        vec2(1.0, 0.0),
+        10.0,
+    );
     assert_eq!(ray_aabb(&r, &b), None);
     // Vertical rays.
-    let h = ray_aabb(&ray(v(0.25, 7.0), v(0.0, -2.0), 10.0), &b).unwrap();
+    let h = ray_aabb(&ray(vec2(0.25, 7.0), vec2(0.0, -2.0), 10.0), &b).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (fx(6.0), v(0.25, 1.0), v(0.0, 1.0))
+        (fx(6.0), vec2(0.25, 1.0), vec2(0.0, 1.0))
     );
-    assert_eq!(ray_aabb(&ray(v(1.5, 7.0), v(0.0, -1.0), 10.0), &b), None);
+    assert_eq!(
+        ray_aabb(&ray(vec2(1.5, 7.0), vec2(0.0, -1.0), 10.0), &b),
+        None
+    );
 }
 
 #[test]
 fn aabb_along_a_face_line() {
     // Running along the top face line y = 1 from outside: touches the
     // closed box at its corner, through the x face.
-    let h = ray_aabb(&ray(v(-5.0, 1.0), v(1.0, 0.0), 10.0), &unit_box()).unwrap();
+    let h = ray_aabb(&ray(vec2(-5.0, 1.0), vec2(1.0, 0.0), 10.0), &unit_box()).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (fx(4.0), v(-1.0, 1.0), v(-1.0, 0.0))
+        (fx(4.0), vec2(-1.0, 1.0), vec2(-1.0, 0.0))
     );
     // Starting on the face and running along it: inside (solid convention).
-    let r = ray(v(0.0, 1.0), v(1.0, 0.0), 10.0);
+    let r = ray(vec2(0.0, 1.0), vec2(1.0, 0.0), 10.0);
     let h = ray_aabb(&r, &unit_box()).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (Fx::ZERO, v(0.0, 1.0), v(-1.0, 0.0))
+        (Fx::ZERO, vec2(0.0, 1.0), vec2(-1.0, 0.0))
     );
 }
 
 #[test]
 fn aabb_inside_pointing_away_and_limits() {
     let b = unit_box();
-    let r = ray(v(0.5, 0.5), v(0.0, 1.0), 10.0);
+    let r = ray(vec2(0.5, 0.5), vec2(0.0, 1.0), 10.0);
     assert_eq!(ray_aabb(&r, &b).unwrap().distance, Fx::ZERO);
-    assert_eq!(ray_aabb(&r, &b).unwrap().normal, v(0.0, -1.0));
-    assert_eq!(ray_aabb(&ray(v(3.0, 0.0), v(1.0, 0.0), 10.0), &b), None);
+    assert_eq!(ray_aabb(&r, &b).unwrap().normal, vec2(0.0, -1.0));
+    assert_eq!(
+        ray_aabb(&ray(vec2(3.0, 0.0), vec2(1.0, 0.0), 10.0), &b),
+        None
+    );
     // max_distance inclusive.
-    assert!(ray_aabb(&ray(v(3.0, 0.0), v(-1.0, 0.0), 2.0), &b).is_some());
-    let short = Ray::new(v(3.0, 0.0), v(-1.0, 0.0), fx(2.0) - Fx::DELTA).unwrap();
+    assert!(ray_aabb(&ray(vec2(3.0, 0.0), vec2(-1.0, 0.0), 2.0), &b).is_some());
+    let short = Ray::new(vec2(3.0, 0.0), vec2(-1.0, 0.0), fx(2.0) - Fx::DELTA).unwrap();
     assert_eq!(ray_aabb(&short, &b), None);
 }
 
@@ -824,9 +856,9 @@ fn aabb_one_ulp_direction_component() {
     // A direction with a one-ulp y component: the y slab is reached only
     // after 2³² units, far beyond any max_distance; the quotient that would
     // saturate is never formed (the reach test rejects it first).
-    let b = Aabb::new(v(0.0, 1.5), v(10_000.0, 0.5));
+    let b = Aabb::new(vec2(0.0, 1.5), vec2(10_000.0, 0.5));
     let r = Ray {
-        origin: v(0.0, 0.0),
+        origin: vec2(0.0, 0.0),
         direction: Vec2::new(Fx::ONE, Fx::DELTA),
         max_distance: Fx::MAX,
     };
@@ -834,13 +866,13 @@ fn aabb_one_ulp_direction_component() {
     // Same with the box placed where the ray does reach it: at x ≥ 2³¹ the
     // ray leaves the representable range, so only boxes before it count.
     // A box straddling y = 0: entered through its x face at distance 5.
-    let b = Aabb::new(v(10.0, 0.0), v(5.0, 1.0));
+    let b = Aabb::new(vec2(10.0, 0.0), vec2(5.0, 1.0));
     let h = ray_aabb(&r, &b).unwrap();
-    assert_eq!((h.distance, h.normal), (fx(5.0), v(-1.0, 0.0)));
+    assert_eq!((h.distance, h.normal), (fx(5.0), vec2(-1.0, 0.0)));
     check_ray_aabb(&r, &b).unwrap();
     // Built by Ray::new, a one-ulp direction is normalised exactly.
-    let r = Ray::new(v(0.0, 0.0), Vec2::new(Fx::DELTA, Fx::ZERO), fx(10.0)).unwrap();
-    assert_eq!(r.direction, v(1.0, 0.0));
+    let r = Ray::new(vec2(0.0, 0.0), Vec2::new(Fx::DELTA, Fx::ZERO), fx(10.0)).unwrap();
+    assert_eq!(r.direction, vec2(1.0, 0.0));
 }
 
 // ---------------------------------------------------------------------------
@@ -852,25 +884,28 @@ fn bounds_world_corners_and_long_rays() {
     let l = 32_768.0;
     // Box at the far corner, ray from the opposite corner along the
     // diagonal: enters exactly through the box's corner (tie → y face).
-    let b = Aabb::new(v(l - 1.0, l - 1.0), v(1.0, 1.0));
-    let r = ray(v(-l, -l), v(1.0, 1.0), 131_072.0);
+    let b = Aabb::new(vec2(l - 1.0, l - 1.0), vec2(1.0, 1.0));
+    let r = ray(vec2(-l, -l), vec2(1.0, 1.0), 131_072.0);
     let h = ray_aabb(&r, &b).unwrap();
-    assert_eq!((h.point, h.normal), (v(l - 2.0, l - 2.0), v(0.0, -1.0)));
+    assert_eq!(
+        (h.point, h.normal),
+        (vec2(l - 2.0, l - 2.0), vec2(0.0, -1.0))
+    );
     check_ray_aabb(&r, &b).unwrap();
     // Along the bottom edge of the world, exactly.
-    let b = Aabb::new(v(l - 0.5, -l + 0.5), v(0.5, 0.5));
-    let r = ray(v(-l, -l), v(1.0, 0.0), 131_072.0);
+    let b = Aabb::new(vec2(l - 0.5, -l + 0.5), vec2(0.5, 0.5));
+    let r = ray(vec2(-l, -l), vec2(1.0, 0.0), 131_072.0);
     let h = ray_aabb(&r, &b).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (fx(65_535.0), v(l - 1.0, -l), v(-1.0, 0.0))
+        (fx(65_535.0), vec2(l - 1.0, -l), vec2(-1.0, 0.0))
     );
     // The same ray against a circle in the far corner.
-    let c = Circle::new(v(l - 1.0, -l + 1.0), fx(1.0));
+    let c = Circle::new(vec2(l - 1.0, -l + 1.0), fx(1.0));
     let h = ray_circle(&r, &c).unwrap();
     assert_eq!(
         (h.distance, h.point, h.normal),
-        (fx(65_535.0), v(l - 1.0, -l), v(0.0, -1.0))
+        (fx(65_535.0), vec2(l - 1.0, -l), vec2(0.0, -1.0))
     );
 }
 
@@ -948,9 +983,9 @@ fn bounds_random_edge_cases() {
     );
     runner
         .run(&case, |(ox, oy, cx, cy, size, f)| {
-            let o = v(ox, oy);
-            let c = v(cx, cy);
-            let Some(r) = Ray::new(o, c - o + v(f, 1.0 - f), fx(131_072.0)) else {
+            let o = vec2(ox, oy);
+            let c = vec2(cx, cy);
+            let Some(r) = Ray::new(o, c - o + vec2(f, 1.0 - f), fx(131_072.0)) else {
                 return Ok(());
             };
             check_ray_circle(&r, &Circle::new(c, size))?;

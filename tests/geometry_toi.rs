@@ -35,6 +35,9 @@ use fixed::types::I48F16;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
+mod common;
+use common::fx_strategies::{positive, scaled};
+
 /// Cases per property and shape pair: 16× proptest's default of 256. Each
 /// case is one query plus about 300 f64 separation evaluations; the whole
 /// file runs in well under a second. (The properties have also been run
@@ -62,10 +65,6 @@ fn tol(d: (f64, f64)) -> f64 {
 // ---------------------------------------------------------------------------
 // Helpers and f64 geometry.
 // ---------------------------------------------------------------------------
-
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
 
 fn p64(p: Vec2) -> (f64, f64) {
     p.to_f64()
@@ -285,22 +284,6 @@ fn check_cb(a: &Circle, da: Vec2, b: &Aabb, db: Vec2) -> Result<(), TestCaseErro
 // Strategies.
 // ---------------------------------------------------------------------------
 
-/// Full-precision `Fx` in `[-2^e, 2^e]`, `e` drawn from a range.
-fn scaled(exps: core::ops::Range<i32>) -> impl Strategy<Value = Fx> {
-    (exps, -(1i64 << 32)..=(1i64 << 32)).prop_map(|(e, m)| {
-        let raw = if e >= 0 { m << e } else { m >> -e };
-        Fx::from_bits(raw)
-    })
-}
-
-/// A positive full-precision `Fx` around `2^e`.
-fn positive(exps: core::ops::Range<i32>) -> impl Strategy<Value = Fx> {
-    (exps, (1i64 << 31)..=(1i64 << 32)).prop_map(|(e, m)| {
-        let raw = if e >= 0 { m << e } else { m >> -e };
-        Fx::from_bits(raw.max(1))
-    })
-}
-
 fn scaled_vec(exps: core::ops::Range<i32>) -> impl Strategy<Value = Vec2> {
     (scaled(exps.clone()), scaled(exps)).prop_map(|(x, y)| Vec2::new(x, y))
 }
@@ -436,54 +419,54 @@ fn hit(toi: Toi) -> (f64, (f64, f64)) {
 
 #[test]
 fn circles_head_on_and_oblique() {
-    let a = Circle::new(v(0.0, 0.0), fx(1.0));
-    let b = Circle::new(v(5.0, 0.0), fx(1.0));
+    let a = Circle::new(vec2(0.0, 0.0), fx(1.0));
+    let b = Circle::new(vec2(5.0, 0.0), fx(1.0));
     assert_eq!(
-        toi_circle_circle(&a, v(2.0, 0.0), &b, v(-2.0, 0.0)),
+        toi_circle_circle(&a, vec2(2.0, 0.0), &b, vec2(-2.0, 0.0)),
         Toi::Hit {
             t: fx(0.75),
-            normal: v(1.0, 0.0)
+            normal: vec2(1.0, 0.0)
         }
     );
     // b at (5, 1.5), a moving by (10, 0): |(5 − 10t, 1.5)| = 2 at
     // t = (5 − √1.75)/10, normal (√1.75, 1.5)/2.
-    let b = Circle::new(v(5.0, 1.5), fx(1.0));
-    let (t, n) = hit(toi_circle_circle(&a, v(10.0, 0.0), &b, v(0.0, 0.0)));
+    let b = Circle::new(vec2(5.0, 1.5), fx(1.0));
+    let (t, n) = hit(toi_circle_circle(&a, vec2(10.0, 0.0), &b, vec2(0.0, 0.0)));
     assert!((t - (5.0 - 1.75f64.sqrt()) / 10.0).abs() < 1e-9, "{t}");
     assert!((n.0 - 1.75f64.sqrt() / 2.0).abs() < 1e-9 && (n.1 - 0.75).abs() < 1e-9);
-    check_cc(&a, v(10.0, 0.0), &b, v(0.0, 0.0)).unwrap();
+    check_cc(&a, vec2(10.0, 0.0), &b, vec2(0.0, 0.0)).unwrap();
 }
 
 #[test]
 fn circles_grazing_and_just_missing() {
-    let a = Circle::new(v(0.0, 0.0), fx(1.0));
+    let a = Circle::new(vec2(0.0, 0.0), fx(1.0));
     // Tangent path: touches at t = 1/2 exactly, normal +Y.
-    let b = Circle::new(v(5.0, 2.0), fx(1.0));
+    let b = Circle::new(vec2(5.0, 2.0), fx(1.0));
     assert_eq!(
-        toi_circle_circle(&a, v(10.0, 0.0), &b, Vec2::ZERO),
+        toi_circle_circle(&a, vec2(10.0, 0.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.5),
-            normal: v(0.0, 1.0)
+            normal: vec2(0.0, 1.0)
         }
     );
     // One ulp further: never touches.
     let b = Circle::new(Vec2::new(fx(5.0), fx(2.0) + Fx::DELTA), fx(1.0));
     assert_eq!(
-        toi_circle_circle(&a, v(10.0, 0.0), &b, Vec2::ZERO),
+        toi_circle_circle(&a, vec2(10.0, 0.0), &b, Vec2::ZERO),
         Toi::Miss
     );
 }
 
 #[test]
 fn circles_step_limits_and_motion() {
-    let a = Circle::new(v(0.0, 0.0), fx(1.0));
-    let b = Circle::new(v(5.0, 0.0), fx(1.0));
+    let a = Circle::new(vec2(0.0, 0.0), fx(1.0));
+    let b = Circle::new(vec2(5.0, 0.0), fx(1.0));
     // Gap 3 closed exactly at the end of the step: t = 1.
     assert_eq!(
-        toi_circle_circle(&a, v(3.0, 0.0), &b, Vec2::ZERO),
+        toi_circle_circle(&a, vec2(3.0, 0.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(1.0),
-            normal: v(1.0, 0.0)
+            normal: vec2(1.0, 0.0)
         }
     );
     // One ulp short: a miss.
@@ -492,25 +475,25 @@ fn circles_step_limits_and_motion() {
     // Moving apart, moving together in parallel (zero relative motion):
     // a miss, and no division by zero.
     assert_eq!(
-        toi_circle_circle(&a, v(-1.0, 0.0), &b, v(1.0, 0.0)),
+        toi_circle_circle(&a, vec2(-1.0, 0.0), &b, vec2(1.0, 0.0)),
         Toi::Miss
     );
     assert_eq!(
-        toi_circle_circle(&a, v(7.0, 3.0), &b, v(7.0, 3.0)),
+        toi_circle_circle(&a, vec2(7.0, 3.0), &b, vec2(7.0, 3.0)),
         Toi::Miss
     );
     assert_eq!(toi_circle_circle(&a, Vec2::ZERO, &b, Vec2::ZERO), Toi::Miss);
     // Chased from behind: b moves away slower than a follows.
     assert_eq!(
-        toi_circle_circle(&a, v(5.0, 0.0), &b, v(2.0, 0.0)),
+        toi_circle_circle(&a, vec2(5.0, 0.0), &b, vec2(2.0, 0.0)),
         Toi::Hit {
             t: fx(1.0),
-            normal: v(1.0, 0.0)
+            normal: vec2(1.0, 0.0)
         }
     );
     // Touching or overlapping at t = 0: Overlapping, whatever the motion.
-    let touching = Circle::new(v(2.0, 0.0), fx(1.0));
-    for d in [Vec2::ZERO, v(-5.0, 0.0), v(5.0, 0.0)] {
+    let touching = Circle::new(vec2(2.0, 0.0), fx(1.0));
+    for d in [Vec2::ZERO, vec2(-5.0, 0.0), vec2(5.0, 0.0)] {
         assert_eq!(
             toi_circle_circle(&a, d, &touching, Vec2::ZERO),
             Toi::Overlapping
@@ -520,120 +503,129 @@ fn circles_step_limits_and_motion() {
 
 #[test]
 fn boxes_landing_sliding_and_corner_tie() {
-    let a = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
-    let ground = Aabb::new(v(0.0, -5.0), v(2.0, 1.0));
+    let a = Aabb::new(vec2(0.0, 0.0), vec2(1.0, 1.0));
+    let ground = Aabb::new(vec2(0.0, -5.0), vec2(2.0, 1.0));
     assert_eq!(
-        toi_aabb_aabb(&a, v(0.0, -6.0), &ground, Vec2::ZERO),
+        toi_aabb_aabb(&a, vec2(0.0, -6.0), &ground, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.5),
-            normal: v(0.0, -1.0)
+            normal: vec2(0.0, -1.0)
         }
     );
     // y projections exactly touching (closed), x gap 2, moving +x by 4:
     // touches at t = 1/2 through the x faces.
-    let a = Aabb::new(v(-5.0, 2.0), v(1.0, 1.0));
-    let b = Aabb::new(v(0.0, 0.0), v(2.0, 1.0));
+    let a = Aabb::new(vec2(-5.0, 2.0), vec2(1.0, 1.0));
+    let b = Aabb::new(vec2(0.0, 0.0), vec2(2.0, 1.0));
     assert_eq!(
-        toi_aabb_aabb(&a, v(4.0, 0.0), &b, Vec2::ZERO),
+        toi_aabb_aabb(&a, vec2(4.0, 0.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.5),
-            normal: v(1.0, 0.0)
+            normal: vec2(1.0, 0.0)
         }
     );
     // y projections one ulp apart: a miss.
-    let a2 = Aabb::new(Vec2::new(fx(-5.0), fx(2.0) + Fx::DELTA), v(1.0, 1.0));
-    assert_eq!(toi_aabb_aabb(&a2, v(4.0, 0.0), &b, Vec2::ZERO), Toi::Miss);
+    let a2 = Aabb::new(Vec2::new(fx(-5.0), fx(2.0) + Fx::DELTA), vec2(1.0, 1.0));
+    assert_eq!(
+        toi_aabb_aabb(&a2, vec2(4.0, 0.0), &b, Vec2::ZERO),
+        Toi::Miss
+    );
     // Corner to corner: both axes close at t = 1/2: the y axis is
     // reported (b is above a: +Y).
-    let a = Aabb::new(v(-3.0, -3.0), v(1.0, 1.0));
-    let b = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
+    let a = Aabb::new(vec2(-3.0, -3.0), vec2(1.0, 1.0));
+    let b = Aabb::new(vec2(0.0, 0.0), vec2(1.0, 1.0));
     assert_eq!(
-        toi_aabb_aabb(&a, v(2.0, 2.0), &b, Vec2::ZERO),
+        toi_aabb_aabb(&a, vec2(2.0, 2.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.5),
-            normal: v(0.0, 1.0)
+            normal: vec2(0.0, 1.0)
         }
     );
     // Same, b moving instead of a.
     assert_eq!(
-        toi_aabb_aabb(&a, Vec2::ZERO, &b, v(-2.0, -2.0)),
+        toi_aabb_aabb(&a, Vec2::ZERO, &b, vec2(-2.0, -2.0)),
         Toi::Hit {
             t: fx(0.5),
-            normal: v(0.0, 1.0)
+            normal: vec2(0.0, 1.0)
         }
     );
 }
 
 #[test]
 fn boxes_axis_parallel_zero_components() {
-    let b = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
+    let b = Aabb::new(vec2(0.0, 0.0), vec2(1.0, 1.0));
     // Moving along y only, x projections overlapping: a hit.
-    let a = Aabb::new(v(1.5, 5.0), v(1.0, 1.0));
+    let a = Aabb::new(vec2(1.5, 5.0), vec2(1.0, 1.0));
     assert_eq!(
-        toi_aabb_aabb(&a, v(0.0, -4.0), &b, Vec2::ZERO),
+        toi_aabb_aabb(&a, vec2(0.0, -4.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.75),
-            normal: v(0.0, -1.0)
+            normal: vec2(0.0, -1.0)
         }
     );
     // x projections apart: a miss, never divided by the zero x motion.
-    let a = Aabb::new(v(3.5, 5.0), v(1.0, 1.0));
-    assert_eq!(toi_aabb_aabb(&a, v(0.0, -40.0), &b, Vec2::ZERO), Toi::Miss);
-    // Overlapping stays overlapping.
-    let a = Aabb::new(v(1.5, 1.5), v(1.0, 1.0));
+    let a = Aabb::new(vec2(3.5, 5.0), vec2(1.0, 1.0));
     assert_eq!(
-        toi_aabb_aabb(&a, v(0.0, -4.0), &b, Vec2::ZERO),
+        toi_aabb_aabb(&a, vec2(0.0, -40.0), &b, Vec2::ZERO),
+        Toi::Miss
+    );
+    // Overlapping stays overlapping.
+    let a = Aabb::new(vec2(1.5, 1.5), vec2(1.0, 1.0));
+    assert_eq!(
+        toi_aabb_aabb(&a, vec2(0.0, -4.0), &b, Vec2::ZERO),
         Toi::Overlapping
     );
 }
 
 #[test]
 fn circle_box_faces_corners_and_boundary() {
-    let b = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
+    let b = Aabb::new(vec2(0.0, 0.0), vec2(1.0, 1.0));
     // Face.
-    let a = Circle::new(v(4.0, 0.5), fx(1.0));
+    let a = Circle::new(vec2(4.0, 0.5), fx(1.0));
     assert_eq!(
-        toi_circle_aabb(&a, v(-4.0, 0.0), &b, Vec2::ZERO),
+        toi_circle_aabb(&a, vec2(-4.0, 0.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.5),
-            normal: v(-1.0, 0.0)
+            normal: vec2(-1.0, 0.0)
         }
     );
     // Face/corner boundary: the centre moves down along x = 1 (the face's
     // end): touches when the centre is at y = 2, t = 3/8, face normal.
-    let a = Circle::new(v(1.0, 5.0), fx(1.0));
+    let a = Circle::new(vec2(1.0, 5.0), fx(1.0));
     assert_eq!(
-        toi_circle_aabb(&a, v(0.0, -8.0), &b, Vec2::ZERO),
+        toi_circle_aabb(&a, vec2(0.0, -8.0), &b, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.375),
-            normal: v(0.0, -1.0)
+            normal: vec2(0.0, -1.0)
         }
     );
     // Corner: along the diagonal onto (1, 1): touches when the centre is 1
     // from the corner, t = (3 − √½)/4; the normal points at the corner.
-    let a = Circle::new(v(4.0, 4.0), fx(1.0));
-    let (t, n) = hit(toi_circle_aabb(&a, v(-4.0, -4.0), &b, Vec2::ZERO));
+    let a = Circle::new(vec2(4.0, 4.0), fx(1.0));
+    let (t, n) = hit(toi_circle_aabb(&a, vec2(-4.0, -4.0), &b, Vec2::ZERO));
     assert!((t - (3.0 - 0.5f64.sqrt()) / 4.0).abs() < 1e-9);
     assert!((n.0 + 0.5f64.sqrt()).abs() < 1e-9 && (n.1 + 0.5f64.sqrt()).abs() < 1e-9);
     // Passing the corner at height 1.9: the corner arc (not the grown
     // box's corner) is hit, at x = 1 + √(1 − 0.81).
-    let a = Circle::new(v(3.0, 1.9), fx(1.0));
-    let (t, n) = hit(toi_circle_aabb(&a, v(-6.0, 0.0), &b, Vec2::ZERO));
+    let a = Circle::new(vec2(3.0, 1.9), fx(1.0));
+    let (t, n) = hit(toi_circle_aabb(&a, vec2(-6.0, 0.0), &b, Vec2::ZERO));
     let x = 1.0 + 0.19f64.sqrt();
     assert!((t - (3.0 - x) / 6.0).abs() < 1e-9, "{t}");
     assert!(
         (n.0 + 0.19f64.sqrt()).abs() < 1e-9 && (n.1 + 0.9).abs() < 1e-9,
         "{n:?}"
     );
-    check_cb(&a, v(-6.0, 0.0), &b, Vec2::ZERO).unwrap();
+    check_cb(&a, vec2(-6.0, 0.0), &b, Vec2::ZERO).unwrap();
     // Passing above the corner arc (height 2.5 > 2): a miss, although the
     // path crosses the grown box's corner square.
-    let a = Circle::new(v(3.0, 2.5), fx(1.0));
-    assert_eq!(toi_circle_aabb(&a, v(-6.0, 0.5), &b, Vec2::ZERO), Toi::Miss);
+    let a = Circle::new(vec2(3.0, 2.5), fx(1.0));
+    assert_eq!(
+        toi_circle_aabb(&a, vec2(-6.0, 0.5), &b, Vec2::ZERO),
+        Toi::Miss
+    );
     assert_eq!(
         toi_circle_aabb(
-            &Circle::new(v(3.0, 2.0) + Vec2::new(Fx::ZERO, Fx::DELTA), fx(1.0)),
-            v(-6.0, 0.0),
+            &Circle::new(vec2(3.0, 2.0) + Vec2::new(Fx::ZERO, Fx::DELTA), fx(1.0)),
+            vec2(-6.0, 0.0),
             &b,
             Vec2::ZERO
         ),
@@ -647,30 +639,33 @@ fn circle_box_starting_in_the_corner_square() {
     // lines) but 0.9·√2 > 1 from the corner: not overlapping. Moving
     // towards the corner by (−0.5, −0.5): touches when 1 from it, after
     // travelling 0.9 − √½ per axis: t = (0.9 − √½)/0.5.
-    let b = Aabb::new(v(0.0, 0.0), v(1.0, 1.0));
-    let a = Circle::new(v(1.9, 1.9), fx(1.0));
-    let (t, n) = hit(toi_circle_aabb(&a, v(-0.5, -0.5), &b, Vec2::ZERO));
+    let b = Aabb::new(vec2(0.0, 0.0), vec2(1.0, 1.0));
+    let a = Circle::new(vec2(1.9, 1.9), fx(1.0));
+    let (t, n) = hit(toi_circle_aabb(&a, vec2(-0.5, -0.5), &b, Vec2::ZERO));
     assert!((t - (0.9 - 0.5f64.sqrt()) / 0.5).abs() < 1e-9, "{t}");
     assert!((n.0 + 0.5f64.sqrt()).abs() < 1e-9 && (n.1 + 0.5f64.sqrt()).abs() < 1e-9);
     // Moving away from the corner from there: a miss.
-    assert_eq!(toi_circle_aabb(&a, v(0.5, 0.1), &b, Vec2::ZERO), Toi::Miss);
+    assert_eq!(
+        toi_circle_aabb(&a, vec2(0.5, 0.1), &b, Vec2::ZERO),
+        Toi::Miss
+    );
 }
 
 #[test]
 fn bullet_through_thin_wall() {
     // A 0.1-radius bullet moving 20 units in one step against a wall 0.1
     // thick: sampling the step's ends would tunnel; the TOI does not.
-    let bullet = Circle::new(v(-10.0, 0.3), fx(0.1));
-    let wall = Aabb::new(v(0.0, 0.0), v(0.05, 5.0));
-    let (t, n) = hit(toi_circle_aabb(&bullet, v(20.0, 0.0), &wall, Vec2::ZERO));
+    let bullet = Circle::new(vec2(-10.0, 0.3), fx(0.1));
+    let wall = Aabb::new(vec2(0.0, 0.0), vec2(0.05, 5.0));
+    let (t, n) = hit(toi_circle_aabb(&bullet, vec2(20.0, 0.0), &wall, Vec2::ZERO));
     assert!((t - (10.0 - 0.15) / 20.0).abs() < 1e-9);
     assert_eq!(n, (1.0, 0.0));
-    let box_bullet = Aabb::new(v(-10.0, 0.3), v(0.1, 0.1));
+    let box_bullet = Aabb::new(vec2(-10.0, 0.3), vec2(0.1, 0.1));
     assert_eq!(
-        toi_aabb_aabb(&box_bullet, v(20.0, 0.0), &wall, Vec2::ZERO),
+        toi_aabb_aabb(&box_bullet, vec2(20.0, 0.0), &wall, Vec2::ZERO),
         Toi::Hit {
             t: fx(0.4925),
-            normal: v(1.0, 0.0)
+            normal: vec2(1.0, 0.0)
         }
     );
 }
@@ -683,26 +678,26 @@ fn bullet_through_thin_wall() {
 fn bounds_across_the_world() {
     let l = 32_768.0;
     // From one edge of the world to the other in one step (65 534 units).
-    let a = Circle::new(v(-l + 1.0, 0.0), fx(1.0));
-    let b = Circle::new(v(l - 1.0, 0.0), fx(1.0));
+    let a = Circle::new(vec2(-l + 1.0, 0.0), fx(1.0));
+    let b = Circle::new(vec2(l - 1.0, 0.0), fx(1.0));
     // The direction is exactly +x, so the cast is exact: s = 65 532, and
     // t = 65 532 / 65 534 truncated to 32 fraction bits.
-    let Toi::Hit { t, normal } = toi_circle_circle(&a, v(2.0 * l - 2.0, 0.0), &b, Vec2::ZERO)
+    let Toi::Hit { t, normal } = toi_circle_circle(&a, vec2(2.0 * l - 2.0, 0.0), &b, Vec2::ZERO)
     else {
         panic!("expected a hit");
     };
     assert_eq!(raw(t), (65_532i128 << 32) / 65_534);
-    assert_eq!(normal, v(1.0, 0.0));
-    let a = Aabb::new(v(-l + 1.0, -l + 1.0), v(1.0, 1.0));
-    let b = Aabb::new(v(l - 1.0, l - 1.0), v(1.0, 1.0));
+    assert_eq!(normal, vec2(1.0, 0.0));
+    let a = Aabb::new(vec2(-l + 1.0, -l + 1.0), vec2(1.0, 1.0));
+    let b = Aabb::new(vec2(l - 1.0, l - 1.0), vec2(1.0, 1.0));
     // Diagonal, corner to corner: exact tie, y axis.
-    let (t, n) = hit(toi_aabb_aabb(&a, v(2.0 * l, 2.0 * l), &b, Vec2::ZERO));
+    let (t, n) = hit(toi_aabb_aabb(&a, vec2(2.0 * l, 2.0 * l), &b, Vec2::ZERO));
     assert!((t - (2.0 * l - 4.0) / (2.0 * l)).abs() <= ULP);
     assert_eq!(n, (0.0, 1.0));
-    check_bb(&a, v(2.0 * l, 2.0 * l), &b, Vec2::ZERO).unwrap();
-    let c = Circle::new(v(-l + 1.0, -l + 1.0), fx(1.0));
-    check_cb(&c, v(2.0 * l, 2.0 * l - 0.5), &b, Vec2::ZERO).unwrap();
-    check_cb(&c, v(2.0 * l - 3.0, 2.0 * l), &b, v(-1.0, 0.0)).unwrap();
+    check_bb(&a, vec2(2.0 * l, 2.0 * l), &b, Vec2::ZERO).unwrap();
+    let c = Circle::new(vec2(-l + 1.0, -l + 1.0), fx(1.0));
+    check_cb(&c, vec2(2.0 * l, 2.0 * l - 0.5), &b, Vec2::ZERO).unwrap();
+    check_cb(&c, vec2(2.0 * l - 3.0, 2.0 * l), &b, vec2(-1.0, 0.0)).unwrap();
 }
 
 /// Extreme inputs (`MIN`/`MAX`, one ulp, far outside the world): results
@@ -778,7 +773,7 @@ fn bounds_random_edge_cases() {
     );
     runner
         .run(&case, |(ax, ay, bx, by, s1, s2, k)| {
-            let (ca, cb) = (v(ax, ay), v(bx, by));
+            let (ca, cb) = (vec2(ax, ay), vec2(bx, by));
             let d = Vec2::from_f64(k * (bx - ax), k * (by - ay));
             check_cc(&Circle::new(ca, s1), d, &Circle::new(cb, s2), Vec2::ZERO)?;
             check_bb(

@@ -11,7 +11,7 @@
 //! default of 256.
 
 use clockwork2d::math::WORLD_LIMIT;
-use clockwork2d::math::{Fx, Scalar, Vec2, WideScalar, fx};
+use clockwork2d::math::{Fx, Scalar, Vec2, WideScalar, fx, vec2};
 use fixed::types::{I32F32, I48F16, I64F64, I96F32};
 use proptest::prelude::*;
 
@@ -491,13 +491,9 @@ proptest! {
 // Hand-computed unit tests.
 // ---------------------------------------------------------------------------
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::from_f64(x, y)
-}
-
 #[test]
 fn three_four_five() {
-    let a = v(3.0, 4.0);
+    let a = vec2(3.0, 4.0);
     assert_eq!(a.length(), fx(5.0));
     assert_eq!(a.length_squared(), fx(25.0));
     assert_eq!(a.distance(Vec2::ZERO), fx(5.0));
@@ -512,24 +508,24 @@ fn three_four_five() {
     assert_eq!(a.dot(Vec2::X), fx(3.0));
     assert_eq!(a.cross(Vec2::X), fx(-4.0));
     assert_eq!(Vec2::<Fx>::X.cross(Vec2::Y), Fx::ONE);
-    assert_eq!(a.perp(), v(-4.0, 3.0));
+    assert_eq!(a.perp(), vec2(-4.0, 3.0));
 }
 
 #[test]
 fn world_limit_products() {
     let w = f64::from(WORLD_LIMIT);
-    let corner = v(w, w);
+    let corner = vec2(w, w);
     // |corner|² = 2³¹ is one ulp past Fx::MAX: narrow saturates, wide exact.
     assert_eq!(corner.length_squared(), Fx::MAX);
     assert_eq!(corner.length_squared_wide(), I64F64::from_num(1u64 << 31));
-    assert_eq!(corner.dot(v(w, -w)), Fx::ZERO);
-    assert_eq!(v(w, 0.0).cross(v(0.0, w)), fx(1_073_741_824.0)); // 2³⁰
-    assert_eq!(corner.cross(v(-w, w)), Fx::MAX); // 2³¹ saturates
-    assert_eq!(corner.cross(v(w, -w)), Fx::MIN); // −2³¹ is exactly MIN
+    assert_eq!(corner.dot(vec2(w, -w)), Fx::ZERO);
+    assert_eq!(vec2(w, 0.0).cross(vec2(0.0, w)), fx(1_073_741_824.0)); // 2³⁰
+    assert_eq!(corner.cross(vec2(-w, w)), Fx::MAX); // 2³¹ saturates
+    assert_eq!(corner.cross(vec2(w, -w)), Fx::MIN); // −2³¹ is exactly MIN
     // Corner to corner across the world: |d|² = 2·(2¹⁶)² = 2³³, exact in the
     // wide type; |d| = 2¹⁶·√2 = 92 681.900 023 68…, floored to a 2⁻³² ulp.
     let d = corner - (-corner);
-    assert_eq!(d, v(2.0 * w, 2.0 * w));
+    assert_eq!(d, vec2(2.0 * w, 2.0 * w));
     assert_eq!(d.length_squared_wide(), I64F64::from_num(1u64 << 33));
     let expect = (1u128 << 97).isqrt(); // √(2³³·2⁶⁴) in raw 2⁻³² units
     assert_eq!(u128::try_from(d.length().to_bits()).ok(), Some(expect));
@@ -594,20 +590,29 @@ fn tiny_vectors() {
 
 #[test]
 fn component_helpers() {
-    let a = v(1.0, -2.0);
-    let b = v(-3.0, 4.0);
-    assert_eq!(a.min(b), v(-3.0, -2.0));
-    assert_eq!(a.max(b), v(1.0, 4.0));
-    assert_eq!(b.abs(), v(3.0, 4.0));
-    assert_eq!(v(5.0, -5.0).clamp(v(-1.0, -1.0), v(1.0, 1.0)), v(1.0, -1.0));
+    let a = vec2(1.0, -2.0);
+    let b = vec2(-3.0, 4.0);
+    assert_eq!(a.min(b), vec2(-3.0, -2.0));
+    assert_eq!(a.max(b), vec2(1.0, 4.0));
+    assert_eq!(b.abs(), vec2(3.0, 4.0));
+    assert_eq!(
+        vec2(5.0, -5.0).clamp(vec2(-1.0, -1.0), vec2(1.0, 1.0)),
+        vec2(1.0, -1.0)
+    );
     // low > high: low wins.
-    assert_eq!(v(0.0, 0.0).clamp(v(2.0, 2.0), v(1.0, 1.0)), v(2.0, 2.0));
-    assert_eq!(a + b, v(-2.0, 2.0));
-    assert_eq!(a - b, v(4.0, -6.0));
-    assert_eq!(a * fx(0.5), v(0.5, -1.0));
-    assert_eq!(a.mul_elements(b), v(-3.0, -8.0));
+    assert_eq!(
+        vec2(0.0, 0.0).clamp(vec2(2.0, 2.0), vec2(1.0, 1.0)),
+        vec2(2.0, 2.0)
+    );
+    assert_eq!(a + b, vec2(-2.0, 2.0));
+    assert_eq!(a - b, vec2(4.0, -6.0));
+    assert_eq!(a * fx(0.5), vec2(0.5, -1.0));
+    assert_eq!(a.mul_elements(b), vec2(-3.0, -8.0));
     assert_eq!(Vec2::<Fx>::default(), Vec2::ZERO);
-    assert_eq!((Vec2::<Fx>::X, Vec2::<Fx>::Y), (v(1.0, 0.0), v(0.0, 1.0)));
+    assert_eq!(
+        (Vec2::<Fx>::X, Vec2::<Fx>::Y),
+        (vec2(1.0, 0.0), vec2(0.0, 1.0))
+    );
     assert_eq!(a.to_f64(), (1.0, -2.0));
     assert_eq!(a.cast::<f64>(), Vec2::new(1.0, -2.0));
     assert_eq!(Vec2::<f64>::new(1.0, -2.0).cast::<Fx>(), a);

@@ -4,22 +4,14 @@
 //! the damage), and random mutations. Accepted replays verify to a report
 //! or a divergence.
 
-use clockwork2d::hash::StateHasher;
 use clockwork2d::prelude::*;
 use clockwork2d::replay::{Recorder, Replay};
 use clockwork2d_scene::builtin;
 use clockwork2d_scene::scripted_commands;
 use proptest::prelude::*;
 
-fn fix_checksum(bytes: &mut [u8]) {
-    if bytes.len() < 8 {
-        return;
-    }
-    let n = bytes.len() - 8;
-    let mut h = StateHasher::default();
-    h.bytes(&bytes[..n]);
-    bytes[n..].copy_from_slice(&h.finish().to_le_bytes());
-}
+mod common;
+use common::file_checksum::fix_checksum;
 
 /// A short replay with spawns, despawns, impulses and refused commands.
 fn sample() -> Vec<u8> {

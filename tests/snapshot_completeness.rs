@@ -145,18 +145,17 @@ fn every_scene_restores_bit_identically_mid_sleep() {
 #[test]
 fn worlds_with_constraints_restore_bit_identically() {
     let mut world = World::new(WorldSettings::default());
-    let v = |x: f64, y: f64| Vec2::new(fx(x), fx(y));
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(20.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(20.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     let mut previous = None;
     for i in 0..6 {
         let x = f64::from(i) * 0.8;
         let ball = world
-            .add_body(BodyDef::dynamic(Shape::circle(fx(0.2))).position(v(x, 6.0)))
+            .add_body(BodyDef::dynamic(Shape::circle(fx(0.2))).position(vec2(x, 6.0)))
             .unwrap();
         let top = match previous {
-            None => Anchor::Point(v(0.0, 8.0)),
+            None => Anchor::Point(vec2(0.0, 8.0)),
             Some(p) => Anchor::Body(p),
         };
         world
@@ -165,22 +164,22 @@ fn worlds_with_constraints_restore_bit_identically() {
         previous = Some(ball);
     }
     let boxed = world
-        .add_body(BodyDef::dynamic(Shape::aabb(v(0.4, 0.4))).position(v(-4.0, 3.0)))
+        .add_body(BodyDef::dynamic(Shape::aabb(vec2(0.4, 0.4))).position(vec2(-4.0, 3.0)))
         .unwrap();
     world
         .add_constraint(Constraint::bendy_spring(
-            Anchor::Point(v(-4.0, 4.0)),
+            Anchor::Point(vec2(-4.0, 4.0)),
             Anchor::Body(boxed),
-            v(40.0, 40.0),
+            vec2(40.0, 40.0),
             fx(1.0),
         ))
         .unwrap();
     let swing = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(v(6.0, 4.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(vec2(6.0, 4.0)))
         .unwrap();
     world
         .add_constraint(Constraint::radial_spring(
-            Anchor::Point(v(8.0, 4.0)),
+            Anchor::Point(vec2(8.0, 4.0)),
             Anchor::Body(swing),
             fx(1.5),
             fx(60.0),

@@ -1,11 +1,13 @@
 //! Each way a snapshot file can be wrong gives its own typed error with a
 //! readable message, and a refused restore leaves the world unchanged.
 
-use clockwork2d::hash::StateHasher;
 use clockwork2d::prelude::*;
 use clockwork2d::replay::Recorder;
 use clockwork2d::snapshot::{FileHeader, FileKind, PAYLOAD_LIMIT, SnapshotError};
 use clockwork2d_scene::builtin;
+
+mod common;
+use common::file_checksum::fix_checksum;
 
 fn stack_at(ticks: u64) -> World {
     let mut w: World = builtin("stack").unwrap().build().unwrap();
@@ -13,14 +15,6 @@ fn stack_at(ticks: u64) -> World {
         w.step();
     }
     w
-}
-
-/// Rewrites the trailing checksum so that only the contents are judged.
-fn fix_checksum(bytes: &mut [u8]) {
-    let n = bytes.len() - 8;
-    let mut h = StateHasher::default();
-    h.bytes(&bytes[..n]);
-    bytes[n..].copy_from_slice(&h.finish().to_le_bytes());
 }
 
 /// Offset of the payload-length field (after magic, version, crate

@@ -3,21 +3,13 @@
 //! decoder and validator see the damage), and random mutations. A world
 //! that is accepted must step and snapshot without panicking.
 
-use clockwork2d::hash::StateHasher;
 use clockwork2d::prelude::*;
 use clockwork2d_scene::builtin;
 use clockwork2d_scene::scripted_commands;
 use proptest::prelude::*;
 
-fn fix_checksum(bytes: &mut [u8]) {
-    if bytes.len() < 8 {
-        return;
-    }
-    let n = bytes.len() - 8;
-    let mut h = StateHasher::default();
-    h.bytes(&bytes[..n]);
-    bytes[n..].copy_from_slice(&h.finish().to_le_bytes());
-}
+mod common;
+use common::file_checksum::fix_checksum;
 
 /// A small world with contacts, sleepers, a free slot and a constraint.
 fn sample_bytes() -> Vec<u8> {
@@ -113,18 +105,17 @@ fn every_truncation_and_extension_is_refused() {
 /// moving kinematic platform and a spring, after scripted commands.
 fn busy_bytes() -> Vec<u8> {
     let mut w: World = builtin("mixed").unwrap().build().unwrap();
-    let v = |x: f64, y: f64| Vec2::new(fx(x), fx(y));
     w.add_body(
-        BodyDef::kinematic(Shape::aabb(v(1.0, 0.2)))
-            .position(v(0.0, 6.0))
-            .velocity(v(0.5, 0.0)),
+        BodyDef::kinematic(Shape::aabb(vec2(1.0, 0.2)))
+            .position(vec2(0.0, 6.0))
+            .velocity(vec2(0.5, 0.0)),
     )
     .unwrap();
     let bob = w
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(v(12.0, 9.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(vec2(12.0, 9.0)))
         .unwrap();
     w.add_constraint(Constraint::radial_spring(
-        Anchor::Point(v(12.0, 11.0)),
+        Anchor::Point(vec2(12.0, 11.0)),
         Anchor::Body(bob),
         fx(1.5),
         fx(40.0),

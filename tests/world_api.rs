@@ -11,7 +11,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::{add_ground, add_stack, v};
+use common::{add_ground, add_stack};
 use proptest::prelude::*;
 
 /// A world with some history: ground, a settling 3-box stack, a ball.
@@ -19,7 +19,7 @@ fn busy_world() -> World {
     let mut w = World::new(WorldSettings::default());
     add_ground(&mut w);
     add_stack(&mut w, 3, 0.05);
-    w.add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(v(3.0, 2.0)))
+    w.add_body(BodyDef::dynamic(Shape::circle(fx(0.3))).position(vec2(3.0, 2.0)))
         .unwrap();
     for _ in 0..20 {
         w.step();
@@ -31,9 +31,9 @@ fn busy_world() -> World {
 
 #[test]
 fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() {
-    let dynamic = |shape| BodyDef::dynamic(shape).position(v(0.0, 5.0));
+    let dynamic = |shape| BodyDef::dynamic(shape).position(vec2(0.0, 5.0));
     let circle = |r: f64| Shape::circle(fx(r));
-    let aabb = |x: f64, y: f64| Shape::aabb(v(x, y));
+    let aabb = |x: f64, y: f64| Shape::aabb(vec2(x, y));
     let cases: Vec<(&str, BodyDef, WorldError)> = vec![
         (
             "zero radius",
@@ -102,17 +102,17 @@ fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() 
         ),
         (
             "x beyond +bounds",
-            dynamic(circle(0.5)).position(v(40_000.0, 0.0)),
+            dynamic(circle(0.5)).position(vec2(40_000.0, 0.0)),
             WorldError::OutOfBounds,
         ),
         (
             "y beyond -bounds",
-            dynamic(circle(0.5)).position(v(0.0, -33_000.0)),
+            dynamic(circle(0.5)).position(vec2(0.0, -33_000.0)),
             WorldError::OutOfBounds,
         ),
         (
             "fixed beyond bounds",
-            BodyDef::fixed(aabb(1.0, 1.0)).position(v(-32_769.0, 0.0)),
+            BodyDef::fixed(aabb(1.0, 1.0)).position(vec2(-32_769.0, 0.0)),
             WorldError::OutOfBounds,
         ),
     ];
@@ -138,7 +138,7 @@ fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() 
     // No id was consumed: the next body gets the id it would have got, and
     // both worlds continue identically.
     let mut reference = untouched;
-    let def = BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(-3.0, 3.0));
+    let def = BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(-3.0, 3.0));
     assert_eq!(world.add_body(def), reference.add_body(def));
     for _ in 0..30 {
         world.step();
@@ -150,11 +150,11 @@ fn invalid_definitions_are_refused_with_the_specific_error_and_change_nothing() 
 #[test]
 fn positions_at_the_bounds_are_accepted_and_just_beyond_refused() {
     let settings = WorldSettings {
-        bounds: Aabb::new(v(0.0, 0.0), v(100.0, 50.0)),
+        bounds: Aabb::new(vec2(0.0, 0.0), vec2(100.0, 50.0)),
         ..WorldSettings::default()
     };
     let mut world = World::new(settings);
-    let def = |x, y| BodyDef::fixed(Shape::circle(fx(0.5))).position(v(x, y));
+    let def = |x, y| BodyDef::fixed(Shape::circle(fx(0.5))).position(vec2(x, y));
     assert!(
         world.add_body(def(100.0, -50.0)).is_ok(),
         "the boundary is inside"
@@ -175,15 +175,15 @@ fn every_command(id: BodyId) -> Vec<Command> {
         Command::Despawn(id),
         Command::ApplyImpulse {
             body: id,
-            impulse: v(1.0, 0.0),
+            impulse: vec2(1.0, 0.0),
         },
         Command::SetVelocity {
             body: id,
-            velocity: v(0.0, 1.0),
+            velocity: vec2(0.0, 1.0),
         },
         Command::SetPosition {
             body: id,
-            position: v(0.0, 3.0),
+            position: vec2(0.0, 3.0),
         },
         Command::Wake(id),
     ]
@@ -220,7 +220,7 @@ fn assert_refused_everywhere(world: &mut World, id: BodyId, what: &str) {
 fn stale_and_unknown_ids_are_refused_by_remove_body_and_every_command() {
     let mut world = busy_world();
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(v(-4.0, 1.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(vec2(-4.0, 1.0)))
         .unwrap();
     world.step();
     let removed = world.remove_body(ball).expect("first removal");
@@ -230,7 +230,7 @@ fn stale_and_unknown_ids_are_refused_by_remove_body_and_every_command() {
     // The slot is reused with a new generation; the old id still names
     // nothing, and commands with it do not reach the new body.
     let newcomer = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(v(-4.0, 1.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(vec2(-4.0, 1.0)))
         .unwrap();
     assert_eq!(newcomer.index(), ball.index(), "the freed slot is reused");
     assert_ne!(newcomer.generation(), ball.generation());
@@ -265,7 +265,7 @@ fn commands_of_the_wrong_kind_are_refused_and_change_nothing() {
     let mut world = busy_world();
     let ground = world.bodies().next().unwrap().0;
     let platform = world
-        .add_body(BodyDef::kinematic(Shape::aabb(v(1.0, 0.2))).position(v(-6.0, 3.0)))
+        .add_body(BodyDef::kinematic(Shape::aabb(vec2(1.0, 0.2))).position(vec2(-6.0, 3.0)))
         .unwrap();
     let ball = world.bodies().last().map(|(id, _)| id).unwrap();
     world.step();
@@ -274,42 +274,42 @@ fn commands_of_the_wrong_kind_are_refused_and_change_nothing() {
         (
             Command::ApplyImpulse {
                 body: ground,
-                impulse: v(1.0, 0.0),
+                impulse: vec2(1.0, 0.0),
             },
             WorldError::NotDynamic(ground),
         ),
         (
             Command::ApplyImpulse {
                 body: platform,
-                impulse: v(1.0, 0.0),
+                impulse: vec2(1.0, 0.0),
             },
             WorldError::NotDynamic(platform),
         ),
         (
             Command::SetVelocity {
                 body: ground,
-                velocity: v(1.0, 0.0),
+                velocity: vec2(1.0, 0.0),
             },
             WorldError::FixedBody(ground),
         ),
         (
             Command::SetVelocity {
                 body: ball,
-                velocity: v(5000.0, 0.0),
+                velocity: vec2(5000.0, 0.0),
             },
             WorldError::SpeedTooLarge,
         ),
         (
             Command::ApplyImpulse {
                 body: platform,
-                impulse: v(1e9, 0.0),
+                impulse: vec2(1e9, 0.0),
             },
             WorldError::NotDynamic(platform),
         ),
         (
             Command::SetPosition {
                 body: ball,
-                position: v(0.0, 40_000.0),
+                position: vec2(0.0, 40_000.0),
             },
             WorldError::OutOfBounds,
         ),
@@ -482,7 +482,7 @@ fn order_key(event: &Event) -> (u8, BodyId, Option<BodyId>) {
 fn events_come_in_the_documented_order() {
     // Small bounds so that a body can leave them: y ∈ [-10, 30].
     let settings = WorldSettings {
-        bounds: Aabb::new(v(0.0, 10.0), v(20.0, 20.0)),
+        bounds: Aabb::new(vec2(0.0, 10.0), vec2(20.0, 20.0)),
         ..WorldSettings::default()
     };
     let mut world = World::new(settings);
@@ -499,7 +499,7 @@ fn events_come_in_the_documented_order() {
     world
         .add_body(
             BodyDef::dynamic(Shape::circle(fx(0.3)))
-                .position(v(0.0, 4.0))
+                .position(vec2(0.0, 4.0))
                 .restitution(fx(0.8)),
         )
         .unwrap();
@@ -507,12 +507,12 @@ fn events_come_in_the_documented_order() {
     for tick in 0..400u64 {
         let commands = match tick {
             150 => vec![
-                Command::Spawn(BodyDef::dynamic(Shape::circle(fx(0.25))).position(v(-5.0, 5.0))),
-                Command::Spawn(BodyDef::dynamic(Shape::circle(fx(0.25))).position(v(5.0, 5.0))),
+                Command::Spawn(BodyDef::dynamic(Shape::circle(fx(0.25))).position(vec2(-5.0, 5.0))),
+                Command::Spawn(BodyDef::dynamic(Shape::circle(fx(0.25))).position(vec2(5.0, 5.0))),
                 Command::Spawn(
                     BodyDef::dynamic(Shape::circle(fx(0.2)))
-                        .position(v(0.0, 20.0))
-                        .velocity(v(0.0, 100.0)),
+                        .position(vec2(0.0, 20.0))
+                        .velocity(vec2(0.0, 100.0)),
                 ),
             ],
             250 => vec![Command::Wake(left[1]), Command::Despawn(right[0])],
@@ -558,29 +558,29 @@ fn queries_never_mutate_and_sort_as_documented() {
     // both exactly at x = 4.5, so a tie on distance must go to b (smaller
     // id). They overlap, but a kinematic and a fixed body do not interact.
     let b = world
-        .add_body(BodyDef::kinematic(Shape::aabb(v(0.5, 0.3))).position(v(5.0, 0.0)))
+        .add_body(BodyDef::kinematic(Shape::aabb(vec2(0.5, 0.3))).position(vec2(5.0, 0.0)))
         .unwrap();
     let a = world
-        .add_body(BodyDef::fixed(Shape::aabb(v(0.5, 0.5))).position(v(5.0, 0.0)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(0.5, 0.5))).position(vec2(5.0, 0.0)))
         .unwrap();
     let c = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(v(10.0, 0.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(vec2(10.0, 0.0)))
         .unwrap();
     let d = world
-        .add_body(BodyDef::kinematic(Shape::aabb(v(1.0, 1.0))).position(v(20.0, 0.0)))
+        .add_body(BodyDef::kinematic(Shape::aabb(vec2(1.0, 1.0))).position(vec2(20.0, 0.0)))
         .unwrap();
     let _off_axis = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(3.0, 5.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(3.0, 5.0)))
         .unwrap();
     let behind = world
-        .add_body(BodyDef::fixed(Shape::aabb(v(0.5, 0.5))).position(v(-5.0, 0.0)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(0.5, 0.5))).position(vec2(-5.0, 0.0)))
         .unwrap();
     world.step();
     let hash = world.state_hash();
     let (tick, events) = (world.tick(), world.events().to_vec());
 
     let origin = Vec2::ZERO;
-    let east = v(1.0, 0.0);
+    let east = vec2(1.0, 0.0);
     let all = QueryFilter::default();
 
     let hit = world.raycast(origin, east, fx(100.0)).unwrap();
@@ -589,7 +589,7 @@ fn queries_never_mutate_and_sort_as_documented() {
     // Any non-zero direction length gives the same answer.
     assert_eq!(
         world
-            .raycast(origin, v(7.0, 0.0), fx(100.0))
+            .raycast(origin, vec2(7.0, 0.0), fx(100.0))
             .map(|h| h.body),
         Some(b)
     );
@@ -668,9 +668,9 @@ fn queries_never_mutate_and_sort_as_documented() {
         "out of reach"
     );
 
-    let area = Aabb::new(v(5.0, 0.0), v(0.1, 0.1));
+    let area = Aabb::new(vec2(5.0, 0.0), vec2(0.1, 0.1));
     assert_eq!(world.query_aabb(&area, &all), vec![b, a]);
-    let wide = Aabb::new(v(0.0, 0.0), v(100.0, 100.0));
+    let wide = Aabb::new(vec2(0.0, 0.0), vec2(100.0, 100.0));
     let everything = world.query_aabb(&wide, &all);
     assert_eq!(everything.len(), 6);
     assert!(
@@ -682,32 +682,32 @@ fn queries_never_mutate_and_sort_as_documented() {
         ..QueryFilter::default()
     };
     assert_eq!(world.query_aabb(&wide, &no_dynamic), vec![b, a, d, behind]);
-    assert_eq!(world.query_point(v(5.0, 0.0), &all), vec![b, a]);
+    assert_eq!(world.query_point(vec2(5.0, 0.0), &all), vec![b, a]);
     assert_eq!(
-        world.query_point(v(5.5, 0.0), &all),
+        world.query_point(vec2(5.5, 0.0), &all),
         vec![b, a],
         "boundaries are included"
     );
     assert_eq!(
-        world.query_point(v(5.5, 0.5), &all),
+        world.query_point(vec2(5.5, 0.5), &all),
         vec![a],
         "a's corner, above b"
     );
-    assert_eq!(world.query_point(v(5.0, 0.0), &not_b), vec![a]);
+    assert_eq!(world.query_point(vec2(5.0, 0.0), &not_b), vec![a]);
     assert_eq!(
-        world.query_point(v(11.0, 0.0), &all),
+        world.query_point(vec2(11.0, 0.0), &all),
         vec![c],
         "on the circle"
     );
-    assert!(world.query_point(v(0.0, 0.0), &all).is_empty());
+    assert!(world.query_point(vec2(0.0, 0.0), &all).is_empty());
 
     // Hammer every query from many origins; nothing may change.
     for k in 0..200 {
-        let o = v(f64::from(k % 20) - 10.0, f64::from(k / 20) - 5.0);
-        let dir = v(f64::from(k % 7) - 3.0, f64::from(k % 5) - 2.0);
+        let o = vec2(f64::from(k % 20) - 10.0, f64::from(k / 20) - 5.0);
+        let dir = vec2(f64::from(k % 7) - 3.0, f64::from(k % 5) - 2.0);
         let _ = world.raycast(o, dir, fx(50.0));
         let _ = world.raycast_all(o, dir, fx(50.0), &all);
-        let _ = world.query_aabb(&Aabb::new(o, v(1.0, 1.0)), &all);
+        let _ = world.query_aabb(&Aabb::new(o, vec2(1.0, 1.0)), &all);
         let _ = world.query_point(o, &all);
     }
     assert_eq!(world.state_hash(), hash, "a query changed the world");

@@ -67,7 +67,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::{Rng, v};
+use common::Rng;
 
 /// 10 000 steps (issue 3), in debug and release alike (~1 s in debug).
 const STEPS: usize = 10_000;
@@ -108,7 +108,7 @@ fn scene(mixed: bool, seed: u64) -> (World, Vec<BodyId>) {
             continue;
         }
         placed.push((x, y, radius));
-        let velocity = v(
+        let velocity = vec2(
             rng.range(-2.0, 2.0) - 0.2 * x,
             rng.range(-2.0, 2.0) - 0.2 * y,
         );
@@ -116,7 +116,7 @@ fn scene(mixed: bool, seed: u64) -> (World, Vec<BodyId>) {
             world
                 .add_body(
                     BodyDef::dynamic(Shape::circle(fx(radius)))
-                        .position(v(x, y))
+                        .position(vec2(x, y))
                         .velocity(velocity)
                         .restitution(Fx::ONE)
                         .friction(Fx::ZERO),
@@ -360,8 +360,8 @@ fn isolated_elastic_collisions_conserve_energy_within_rounding() {
             let mut world = World::new(settings());
             let ball = |r: f64, x: f64, y: f64, vx: f64, vy: f64| {
                 BodyDef::dynamic(Shape::circle(fx(r)))
-                    .position(v(x, y))
-                    .velocity(v(vx, vy))
+                    .position(vec2(x, y))
+                    .velocity(vec2(vx, vy))
                     .restitution(Fx::ONE)
                     .friction(Fx::ZERO)
             };

@@ -16,7 +16,6 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::v;
 
 const SPEED: f64 = 1000.0;
 const RADIUS: f64 = 0.05;
@@ -87,7 +86,7 @@ fn wall_scene() -> (World, BodyId) {
     let mut world = zero_gravity();
     // Near face at x = 49.95, 3 steps of flight away; 0.1 thick, 40 tall.
     let wall = world
-        .add_body(BodyDef::fixed(Shape::aabb(v(HALF_THICKNESS, 20.0))).position(v(50.0, 0.0)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(HALF_THICKNESS, 20.0))).position(vec2(50.0, 0.0)))
         .unwrap();
     (world, wall)
 }
@@ -96,7 +95,9 @@ fn thin_box_scene() -> (World, BodyId) {
     let mut world = zero_gravity();
     // A free 0.1 × 2 box (mass 0.2), at rest, near face at x = 49.95.
     let thin = world
-        .add_body(BodyDef::dynamic(Shape::aabb(v(HALF_THICKNESS, 1.0))).position(v(50.0, 0.0)))
+        .add_body(
+            BodyDef::dynamic(Shape::aabb(vec2(HALF_THICKNESS, 1.0))).position(vec2(50.0, 0.0)),
+        )
         .unwrap();
     (world, thin)
 }
@@ -105,8 +106,12 @@ fn thin_box_scene() -> (World, BodyId) {
 /// exactly 1000: (800, 600)), aimed so it hits the obstacle at y ≈ 0.5.
 fn shots() -> [(&'static str, Vec2, Vec2); 2] {
     [
-        ("straight", v(0.0, 0.0), v(SPEED, 0.0)),
-        ("angled 3-4-5", v(0.0, 0.5 - 50.0 * 0.75), v(800.0, 600.0)),
+        ("straight", vec2(0.0, 0.0), vec2(SPEED, 0.0)),
+        (
+            "angled 3-4-5",
+            vec2(0.0, 0.5 - 50.0 * 0.75),
+            vec2(800.0, 600.0),
+        ),
     ]
 }
 

@@ -13,7 +13,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::{Rng, add_ground, add_pyramid, add_stack, v};
+use common::{Rng, add_ground, add_pyramid, add_stack};
 
 /// A scene: how to build the world, and the commands for each tick.
 trait Scene {
@@ -143,11 +143,11 @@ impl Scene for Mixed {
         let mut w = World::new(WorldSettings::default());
         self.ground = Some(add_ground(&mut w));
         for x in [-12.0, 12.0] {
-            w.add_body(BodyDef::fixed(Shape::aabb(v(0.5, 10.0))).position(v(x, 10.0)))
+            w.add_body(BodyDef::fixed(Shape::aabb(vec2(0.5, 10.0))).position(vec2(x, 10.0)))
                 .unwrap();
         }
         self.platform = Some(
-            w.add_body(BodyDef::kinematic(Shape::aabb(v(2.0, 0.25))).position(v(0.0, 6.0)))
+            w.add_body(BodyDef::kinematic(Shape::aabb(vec2(2.0, 0.25))).position(vec2(0.0, 6.0)))
                 .unwrap(),
         );
         for k in 0..100 {
@@ -157,14 +157,14 @@ impl Scene for Mixed {
                 BodyDef::dynamic(Shape::circle(fx(self.rng.range(0.15, 0.5))))
                     .restitution(fx(self.rng.range(0.0, 0.6)))
             } else {
-                BodyDef::dynamic(Shape::aabb(v(
+                BodyDef::dynamic(Shape::aabb(vec2(
                     self.rng.range(0.2, 0.6),
                     self.rng.range(0.2, 0.6),
                 )))
                 .friction(fx(self.rng.range(0.1, 0.9)))
             };
             self.dynamic
-                .push(w.add_body(def.position(v(x, y))).unwrap());
+                .push(w.add_body(def.position(vec2(x, y))).unwrap());
         }
         w
     }
@@ -181,25 +181,25 @@ impl Scene for Mixed {
             };
             out.push(Command::SetVelocity {
                 body: platform,
-                velocity: v(s, 0.0),
+                velocity: vec2(s, 0.0),
             });
         }
         match tick % 50 {
             7 => {
                 let body = self.pick();
-                let impulse = v(self.rng.range(-3.0, 3.0), self.rng.range(0.0, 6.0));
+                let impulse = vec2(self.rng.range(-3.0, 3.0), self.rng.range(0.0, 6.0));
                 out.push(Command::ApplyImpulse { body, impulse });
             }
             13 => {
                 let body = self.pick();
                 out.push(Command::SetVelocity {
                     body,
-                    velocity: v(self.rng.range(-4.0, 4.0), 2.0),
+                    velocity: vec2(self.rng.range(-4.0, 4.0), 2.0),
                 });
             }
             21 => {
                 let def = BodyDef::dynamic(Shape::circle(fx(0.3)))
-                    .position(v(self.rng.range(-8.0, 8.0), 25.0));
+                    .position(vec2(self.rng.range(-8.0, 8.0), 25.0));
                 out.push(Command::Spawn(def));
             }
             29 if self.dynamic.len() > 20 => {
@@ -212,7 +212,7 @@ impl Scene for Mixed {
                 let body = self.pick();
                 out.push(Command::SetPosition {
                     body,
-                    position: v(self.rng.range(-9.0, 9.0), 20.0),
+                    position: vec2(self.rng.range(-9.0, 9.0), 20.0),
                 });
                 out.push(Command::Wake(self.pick()));
             }
@@ -223,7 +223,7 @@ impl Scene for Mixed {
                 }
                 out.push(Command::ApplyImpulse {
                     body: self.ground.unwrap(),
-                    impulse: v(1.0, 0.0),
+                    impulse: vec2(1.0, 0.0),
                 });
             }
             _ => {}

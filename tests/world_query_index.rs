@@ -502,12 +502,8 @@ proptest! {
 // Hand-written cases.
 // ---------------------------------------------------------------------------
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 fn square(world: &mut World, kind: BodyKind, at: Vec2) -> BodyId {
-    let shape = Shape::aabb(v(0.5, 0.5));
+    let shape = Shape::aabb(vec2(0.5, 0.5));
     let def = match kind {
         BodyKind::Fixed => BodyDef::fixed(shape),
         BodyKind::Kinematic => BodyDef::kinematic(shape),
@@ -548,7 +544,7 @@ fn empty_world_answers_nothing() {
             .raycast_all(Vec2::ZERO, Vec2::X, Fx::MAX, &all)
             .is_empty()
     );
-    let area = Aabb::new(Vec2::ZERO, v(100.0, 100.0));
+    let area = Aabb::new(Vec2::ZERO, vec2(100.0, 100.0));
     assert!(index.query_aabb(&area, &all).is_empty());
     assert!(index.query_point(Vec2::ZERO, &all).is_empty());
 }
@@ -559,28 +555,31 @@ fn exact_ties_go_to_the_smaller_id_whatever_the_tree_order() {
     // Fill slots 0..8, free slot 2, and reuse it: the re-added body has the
     // smaller index (and a later generation) than the others at its place.
     let mut ids: Vec<BodyId> = (0..8)
-        .map(|i| square(&mut world, BodyKind::Fixed, v(f64::from(i) * 3.0, 0.0)))
+        .map(|i| square(&mut world, BodyKind::Fixed, vec2(f64::from(i) * 3.0, 0.0)))
         .collect();
     world.remove_body(ids[2]).unwrap();
-    let twin_late = square(&mut world, BodyKind::Dynamic, v(21.0, 0.0));
+    let twin_late = square(&mut world, BodyKind::Dynamic, vec2(21.0, 0.0));
     assert_eq!(twin_late.index(), 2);
     ids[2] = twin_late;
     // Slot 7 also holds a square at x = 21: an exact tie at distance 20.5.
     let index = world.query_index();
-    let hit = index.raycast(v(0.0, 5.0), v(0.0, -1.0), fx(10.0));
-    assert_eq!(hit, world.raycast(v(0.0, 5.0), v(0.0, -1.0), fx(10.0)));
+    let hit = index.raycast(vec2(0.0, 5.0), vec2(0.0, -1.0), fx(10.0));
+    assert_eq!(
+        hit,
+        world.raycast(vec2(0.0, 5.0), vec2(0.0, -1.0), fx(10.0))
+    );
     let hit = index
-        .raycast(v(30.0, 0.0), v(-1.0, 0.0), fx(100.0))
+        .raycast(vec2(30.0, 0.0), vec2(-1.0, 0.0), fx(100.0))
         .unwrap();
     assert_eq!(hit.body, twin_late);
     assert_eq!(hit.hit.distance, fx(8.5));
     assert_eq!(
         Some(hit),
-        world.raycast(v(30.0, 0.0), v(-1.0, 0.0), fx(100.0))
+        world.raycast(vec2(30.0, 0.0), vec2(-1.0, 0.0), fx(100.0))
     );
     let all = index.raycast_all(
-        v(30.0, 0.0),
-        v(-1.0, 0.0),
+        vec2(30.0, 0.0),
+        vec2(-1.0, 0.0),
         fx(100.0),
         &QueryFilter::default(),
     );
@@ -590,8 +589,8 @@ fn exact_ties_go_to_the_smaller_id_whatever_the_tree_order() {
     assert_eq!(
         all,
         world.raycast_all(
-            v(30.0, 0.0),
-            v(-1.0, 0.0),
+            vec2(30.0, 0.0),
+            vec2(-1.0, 0.0),
             fx(100.0),
             &QueryFilter::default()
         )
@@ -601,31 +600,31 @@ fn exact_ties_go_to_the_smaller_id_whatever_the_tree_order() {
 #[test]
 fn origin_inside_grazing_rays_and_corners_agree() {
     let mut world = World::new(WorldSettings::default());
-    let a = square(&mut world, BodyKind::Fixed, v(0.0, 0.0));
-    let _b = square(&mut world, BodyKind::Kinematic, v(1.0, 0.0)); // shares an edge
+    let a = square(&mut world, BodyKind::Fixed, vec2(0.0, 0.0));
+    let _b = square(&mut world, BodyKind::Kinematic, vec2(1.0, 0.0)); // shares an edge
     let c = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(0.0, 3.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(0.0, 3.0)))
         .unwrap();
     let all = QueryFilter::default();
     // Inside: distance 0, normal against the direction.
     let hit = world
         .query_index()
-        .raycast(v(0.1, 0.1), Vec2::X, fx(5.0))
+        .raycast(vec2(0.1, 0.1), Vec2::X, fx(5.0))
         .unwrap();
     assert_eq!(hit.body, a);
     assert_eq!(hit.hit.distance, Fx::ZERO);
     // Along the top faces (y = 0.5), along the shared edge, through corners,
     // tangent to the circle, towards the circle's bounding-box corner.
     let cases = [
-        (v(-3.0, 0.5), Vec2::X),
-        (v(0.5, -3.0), Vec2::Y),
-        (v(-1.5, -1.5), v(1.0, 1.0)),
-        (v(-2.0, 1.5), v(1.5, -1.0)),
-        (v(-3.0, 3.5), Vec2::X),
-        (v(0.5, -5.0), Vec2::Y),
-        (v(-3.0, 0.0), v(2.5, 3.5)),
-        (v(0.5, 0.5), v(-1.0, 1.0)),
-        (v(0.0, 3.0), v(0.0, -1.0)),
+        (vec2(-3.0, 0.5), Vec2::X),
+        (vec2(0.5, -3.0), Vec2::Y),
+        (vec2(-1.5, -1.5), vec2(1.0, 1.0)),
+        (vec2(-2.0, 1.5), vec2(1.5, -1.0)),
+        (vec2(-3.0, 3.5), Vec2::X),
+        (vec2(0.5, -5.0), Vec2::Y),
+        (vec2(-3.0, 0.0), vec2(2.5, 3.5)),
+        (vec2(0.5, 0.5), vec2(-1.0, 1.0)),
+        (vec2(0.0, 3.0), vec2(0.0, -1.0)),
     ];
     for (origin, dir) in cases {
         for dist in [Fx::ZERO, fx(0.5), fx(3.0), fx(10.0), Fx::MAX] {
@@ -634,7 +633,7 @@ fn origin_inside_grazing_rays_and_corners_agree() {
     }
     let circle_top = world
         .query_index()
-        .raycast(v(-3.0, 3.5), Vec2::X, fx(10.0))
+        .raycast(vec2(-3.0, 3.5), Vec2::X, fx(10.0))
         .unwrap();
     assert_eq!(circle_top.body, c);
 }
@@ -642,25 +641,25 @@ fn origin_inside_grazing_rays_and_corners_agree() {
 #[test]
 fn far_origins_zero_directions_and_bad_distances_agree() {
     let mut world = World::new(WorldSettings::default());
-    square(&mut world, BodyKind::Fixed, v(0.0, 0.0));
+    square(&mut world, BodyKind::Fixed, vec2(0.0, 0.0));
     world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(2.0))).position(v(10.0, 0.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(2.0))).position(vec2(10.0, 0.0)))
         .unwrap();
     let all = QueryFilter::default();
-    let far = v(-1_000_000.0, 0.0);
+    let far = vec2(-1_000_000.0, 0.0);
     let index = world.query_index();
     let hit = index.raycast(far, Vec2::X, Fx::MAX).unwrap();
     assert_eq!(Some(hit), world.raycast(far, Vec2::X, Fx::MAX));
     for (origin, dir, dist) in [
         (far, Vec2::X, Fx::MAX),
-        (Vec2::new(Fx::MIN, Fx::MIN), v(1.0, 1.0), Fx::MAX),
-        (Vec2::new(Fx::MAX, Fx::ZERO), v(-1.0, 0.0), Fx::MAX),
-        (v(-5.0, 0.0), Vec2::ZERO, fx(10.0)),
-        (v(-5.0, 0.0), Vec2::X, fx(-1.0)),
-        (v(-5.0, 0.0), Vec2::X, Fx::ZERO),
-        (v(-0.5, 0.0), Vec2::X, Fx::ZERO),
-        (v(-5.0, 0.0), Vec2::new(Fx::DELTA, Fx::ZERO), fx(4.5)),
-        (v(-5.0, 0.0), Vec2::new(Fx::DELTA, Fx::DELTA), Fx::MAX),
+        (Vec2::new(Fx::MIN, Fx::MIN), vec2(1.0, 1.0), Fx::MAX),
+        (Vec2::new(Fx::MAX, Fx::ZERO), vec2(-1.0, 0.0), Fx::MAX),
+        (vec2(-5.0, 0.0), Vec2::ZERO, fx(10.0)),
+        (vec2(-5.0, 0.0), Vec2::X, fx(-1.0)),
+        (vec2(-5.0, 0.0), Vec2::X, Fx::ZERO),
+        (vec2(-0.5, 0.0), Vec2::X, Fx::ZERO),
+        (vec2(-5.0, 0.0), Vec2::new(Fx::DELTA, Fx::ZERO), fx(4.5)),
+        (vec2(-5.0, 0.0), Vec2::new(Fx::DELTA, Fx::DELTA), Fx::MAX),
     ] {
         assert_same(&world, origin, dir, dist, &all);
     }
@@ -675,7 +674,7 @@ fn filters_agree() {
         ids.push(square(
             &mut world,
             kinds[i % 3],
-            v(i as f64 * 0.75, (i % 4) as f64 * 0.25),
+            vec2(i as f64 * 0.75, (i % 4) as f64 * 0.25),
         ));
     }
     world.remove_body(ids[4]).unwrap();
@@ -688,7 +687,7 @@ fn filters_agree() {
                 dynamic: bits & 4 != 0,
                 exclude,
             };
-            let (o, d) = (v(-2.0, 0.1), Vec2::X);
+            let (o, d) = (vec2(-2.0, 0.1), Vec2::X);
             assert_eq!(
                 index.raycast_filtered(o, d, fx(100.0), &filter),
                 world.raycast_filtered(o, d, fx(100.0), &filter)
@@ -697,14 +696,14 @@ fn filters_agree() {
                 index.raycast_all(o, d, fx(100.0), &filter),
                 world.raycast_all(o, d, fx(100.0), &filter)
             );
-            let area = Aabb::new(v(10.0, 0.0), v(5.0, 1.0));
+            let area = Aabb::new(vec2(10.0, 0.0), vec2(5.0, 1.0));
             assert_eq!(
                 index.query_aabb(&area, &filter),
                 world.query_aabb(&area, &filter)
             );
             assert_eq!(
-                index.query_point(v(3.0, 0.25), &filter),
-                world.query_point(v(3.0, 0.25), &filter)
+                index.query_point(vec2(3.0, 0.25), &filter),
+                world.query_point(vec2(3.0, 0.25), &filter)
             );
         }
     }
@@ -736,7 +735,7 @@ fn pyramid_rays_agree() {
             let got = index.raycast(origin, dir, fx(300.0));
             assert_eq!(got, world.raycast(origin, dir, fx(300.0)), "round {round}");
             hits += usize::from(got.is_some());
-            let area = Aabb::new(target, v(1.5, 0.75));
+            let area = Aabb::new(target, vec2(1.5, 0.75));
             let all = QueryFilter::default();
             assert_eq!(index.query_aabb(&area, &all), world.query_aabb(&area, &all));
             assert_eq!(

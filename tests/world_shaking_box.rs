@@ -43,7 +43,6 @@ mod common;
 use std::f64::consts::PI;
 
 use clockwork2d::prelude::*;
-use common::v;
 
 const RADIUS: f64 = 0.25;
 const AMPLITUDE: f64 = 0.5;
@@ -68,7 +67,7 @@ fn velocity_table() -> Vec<Vec2> {
         .map(|k| {
             let (x0, y0) = offset(k as f64 * h);
             let (x1, y1) = offset((k + 1) as f64 * h);
-            v((x1 - x0) / h, (y1 - y0) / h)
+            vec2((x1 - x0) / h, (y1 - y0) / h)
         })
         .collect()
 }
@@ -90,7 +89,7 @@ fn thousand_circles_in_a_shaking_box_stay_inside() {
     .iter()
     .map(|&((x, y), (ex, ey))| {
         world
-            .add_body(BodyDef::kinematic(Shape::aabb(v(ex, ey))).position(v(x, y)))
+            .add_body(BodyDef::kinematic(Shape::aabb(vec2(ex, ey))).position(vec2(x, y)))
             .unwrap()
     })
     .collect();
@@ -103,7 +102,7 @@ fn thousand_circles_in_a_shaking_box_stay_inside() {
             let y = 0.5 + row as f64 * 0.55;
             circles.push(
                 world
-                    .add_body(BodyDef::dynamic(Shape::circle(fx(RADIUS))).position(v(x, y)))
+                    .add_body(BodyDef::dynamic(Shape::circle(fx(RADIUS))).position(vec2(x, y)))
                     .unwrap(),
             );
         }

@@ -30,7 +30,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::{add_ground, add_pyramid, add_stack, v};
+use common::{add_ground, add_pyramid, add_stack};
 
 /// Ticks per second at the default dt = 1/60.
 const HZ: u64 = 60;
@@ -184,15 +184,15 @@ fn mass_ratio_case(gap: f64) {
     add_ground(&mut world);
     let light = world
         .add_body(
-            BodyDef::dynamic(Shape::aabb(v(0.5, 0.5)))
-                .position(v(0.0, 0.5))
+            BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5)))
+                .position(vec2(0.0, 0.5))
                 .mass(fx(1.0)),
         )
         .unwrap();
     let heavy = world
         .add_body(
-            BodyDef::dynamic(Shape::aabb(v(0.5, 0.5)))
-                .position(v(0.0, 1.5 + gap))
+            BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5)))
+                .position(vec2(0.0, 1.5 + gap))
                 .mass(fx(100.0)),
         )
         .unwrap();

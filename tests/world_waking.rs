@@ -8,7 +8,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
-use common::{add_ground, add_stack, v, y_of};
+use common::{add_ground, add_stack, y_of};
 
 /// Builds a 5-box stack (starting 0.05 apart) and steps until every box
 /// sleeps (at most 240 ticks).
@@ -37,7 +37,7 @@ fn a_ball_dropped_on_a_sleeping_stack_wakes_it() {
     // its bottom 1 unit above it and falls 1 unit in sqrt(2/10) = 0.45 s,
     // i.e. ~27 ticks; it is awake (just added), the stack is not.
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(v(0.0, 6.25)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.25))).position(vec2(0.0, 6.25)))
         .unwrap();
     let dropped_at = world.tick();
     let mut woke_at = vec![None; stack.len()];

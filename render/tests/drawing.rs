@@ -9,10 +9,6 @@ use clockwork2d_render::{
     view_of_world,
 };
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 /// 10 pixels per unit, world origin at the centre of a 200×100 picture.
 fn view() -> View {
     View {
@@ -41,10 +37,10 @@ fn view_maps_world_to_pixels_with_y_up_and_back() {
 fn a_body_is_drawn_at_its_place_and_nowhere_else() {
     let mut world = World::new(WorldSettings::default());
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(v(3.0, 1.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(1.0))).position(vec2(3.0, 1.0)))
         .unwrap();
     let wall = world
-        .add_body(BodyDef::fixed(Shape::aabb(v(0.5, 2.0))).position(v(-5.0, 0.0)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(0.5, 2.0))).position(vec2(-5.0, 0.0)))
         .unwrap();
     let mut canvas = Canvas::new(view()).unwrap();
     draw_world(&mut canvas, &world, &Layers::default());
@@ -68,7 +64,7 @@ fn a_body_is_drawn_at_its_place_and_nowhere_else() {
     world
         .apply(Command::SetPosition {
             body: ball,
-            position: v(-2.0, -2.0),
+            position: vec2(-2.0, -2.0),
         })
         .unwrap();
     let mut canvas = Canvas::new(view()).unwrap();
@@ -81,10 +77,10 @@ fn a_body_is_drawn_at_its_place_and_nowhere_else() {
 fn a_sleeping_body_is_drawn_differently_from_an_awake_one() {
     let mut world = World::new(WorldSettings::default());
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(5.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(5.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     let crate_box = world
-        .add_body(BodyDef::dynamic(Shape::aabb(v(1.0, 1.0))).position(v(0.0, 1.0)))
+        .add_body(BodyDef::dynamic(Shape::aabb(vec2(1.0, 1.0))).position(vec2(0.0, 1.0)))
         .unwrap();
     let centre_colour = |world: &World| {
         let mut canvas = Canvas::new(view_of_world(world, 120, 80).unwrap()).unwrap();
@@ -112,46 +108,46 @@ fn a_sleeping_body_is_drawn_differently_from_an_awake_one() {
 #[test]
 fn closest_points_lie_on_both_surfaces_for_every_shape_pair() {
     let circle = Shape::circle(fx(1.0));
-    let square = Shape::aabb(v(1.0, 1.0));
+    let square = Shape::aabb(vec2(1.0, 1.0));
     let close = |p: (f64, f64), q: (f64, f64)| (p.0 - q.0).abs() < 1e-6 && (p.1 - q.1).abs() < 1e-6;
     // Circles 3 apart on x: gap 1, points at x = 1 and x = 2.
-    let c = contact_points(&circle, v(0.0, 0.0), &circle, v(3.0, 0.0));
+    let c = contact_points(&circle, vec2(0.0, 0.0), &circle, vec2(3.0, 0.0));
     assert!(
         close(c.on_a, (1.0, 0.0)) && close(c.on_b, (2.0, 0.0)),
         "{c:?}"
     );
     // Overlapping circles: the points cross over (depth 0.5).
-    let c = contact_points(&circle, v(0.0, 0.0), &circle, v(0.0, 1.5));
+    let c = contact_points(&circle, vec2(0.0, 0.0), &circle, vec2(0.0, 1.5));
     assert!(
         close(c.on_a, (0.0, 1.0)) && close(c.on_b, (0.0, 0.5)),
         "{c:?}"
     );
     // Circle centre outside a box, off its corner: the box point is the
     // corner (1, 1); the circle's is on the diagonal at distance 1.
-    let c = contact_points(&circle, v(3.0, 3.0), &square, v(0.0, 0.0));
+    let c = contact_points(&circle, vec2(3.0, 3.0), &square, vec2(0.0, 0.0));
     let d = std::f64::consts::FRAC_1_SQRT_2;
     assert!(close(c.on_b, (1.0, 1.0)), "{c:?}");
     assert!(close(c.on_a, (3.0 - d, 3.0 - d)), "{c:?}");
     // Circle centre inside the box, nearer the right face: the box point is
     // on that face, the circle's point on its far (left) side.
-    let c = contact_points(&circle, v(0.5, 0.2), &square, v(0.0, 0.0));
+    let c = contact_points(&circle, vec2(0.5, 0.2), &square, vec2(0.0, 0.0));
     assert!(close(c.on_b, (1.0, 0.2)), "{c:?}");
     assert!(close(c.on_a, (-0.5, 0.2)), "{c:?}");
     // Same pair, box first: the points swap roles.
-    let c = contact_points(&square, v(0.0, 0.0), &circle, v(0.5, 0.2));
+    let c = contact_points(&square, vec2(0.0, 0.0), &circle, vec2(0.5, 0.2));
     assert!(
         close(c.on_a, (1.0, 0.2)) && close(c.on_b, (-0.5, 0.2)),
         "{c:?}"
     );
     // Boxes overlapping on x by 0.5, offset on y by 1: the points are on
     // the facing x faces, at the middle of the y overlap [0, 1].
-    let c = contact_points(&square, v(0.0, 0.0), &square, v(1.5, 1.0));
+    let c = contact_points(&square, vec2(0.0, 0.0), &square, vec2(1.5, 1.0));
     assert!(
         close(c.on_a, (1.0, 0.5)) && close(c.on_b, (0.5, 0.5)),
         "{c:?}"
     );
     // Boxes apart on both axes: nearest corners.
-    let c = contact_points(&square, v(0.0, 0.0), &square, v(5.0, 2.5));
+    let c = contact_points(&square, vec2(0.0, 0.0), &square, vec2(5.0, 2.5));
     assert!(
         close(c.on_a, (1.0, 1.0)) && close(c.on_b, (4.0, 1.5)),
         "{c:?}"
@@ -161,7 +157,7 @@ fn closest_points_lie_on_both_surfaces_for_every_shape_pair() {
 #[test]
 fn contacts_and_rays_are_drawn_where_they_are() {
     let circle = Shape::circle(fx(1.0));
-    let points = contact_points(&circle, v(-2.0, 0.0), &circle, v(2.0, 0.0));
+    let points = contact_points(&circle, vec2(-2.0, 0.0), &circle, vec2(2.0, 0.0));
     let mut canvas = Canvas::new(view()).unwrap();
     draw_contact(&mut canvas, &points, 10.0);
     // Points at x = -1 and x = 1: pixels 90 and 110 on row 50.
@@ -172,8 +168,8 @@ fn contacts_and_rays_are_drawn_where_they_are() {
     assert_eq!(canvas.colour_at(97, 50), Some(Colour::Normal));
     assert_eq!(canvas.colour_at(84, 50), Some(Colour::Background));
 
-    let ray = Ray::new(v(-8.0, 2.0), v(1.0, 0.0), fx(20.0)).unwrap();
-    let hit = ray_circle(&ray, &Circle::new(v(0.0, 2.0), fx(1.0))).unwrap();
+    let ray = Ray::new(vec2(-8.0, 2.0), vec2(1.0, 0.0), fx(20.0)).unwrap();
+    let hit = ray_circle(&ray, &Circle::new(vec2(0.0, 2.0), fx(1.0))).unwrap();
     let mut canvas = Canvas::new(view()).unwrap();
     draw_ray(&mut canvas, &ray, Some(&hit), 8.0);
     // The ray along y = 2 (row 30) from x = -8 (pixel 20) to the hit at
@@ -187,11 +183,11 @@ fn contacts_and_rays_are_drawn_where_they_are() {
 fn springs_and_ropes_are_drawn_between_their_anchors() {
     let mut world = World::new(WorldSettings::default());
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(0.0, -2.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(0.0, -2.0)))
         .unwrap();
     world
         .add_constraint(Constraint::rope(
-            Anchor::Point(v(0.0, 3.0)),
+            Anchor::Point(vec2(0.0, 3.0)),
             Anchor::Body(ball),
             fx(5.0),
         ))
@@ -209,11 +205,11 @@ fn springs_and_ropes_are_drawn_between_their_anchors() {
     // is empty... unless the sag is vertical. Use a horizontal chord.
     let mut world = World::new(WorldSettings::default());
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(4.0, 0.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(4.0, 0.0)))
         .unwrap();
     world
         .add_constraint(Constraint::rope(
-            Anchor::Point(v(-4.0, 0.0)),
+            Anchor::Point(vec2(-4.0, 0.0)),
             Anchor::Body(ball),
             fx(10.0),
         ))
@@ -230,11 +226,11 @@ fn springs_and_ropes_are_drawn_between_their_anchors() {
     // the pole's middle.
     let mut world = World::new(WorldSettings::default());
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(4.0, 0.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(4.0, 0.0)))
         .unwrap();
     world
         .add_constraint(Constraint::radial_spring(
-            Anchor::Point(v(-4.0, 0.0)),
+            Anchor::Point(vec2(-4.0, 0.0)),
             Anchor::Body(ball),
             fx(8.0),
             fx(10.0),
@@ -278,10 +274,10 @@ fn contacts_are_drawn_between_visible_bodies_only() {
     // Two unit boxes resting on each other, after a step (so they touch).
     let mut world = World::new(WorldSettings::default());
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(5.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(5.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     world
-        .add_body(BodyDef::dynamic(Shape::aabb(v(0.5, 0.5))).position(v(0.0, 0.5)))
+        .add_body(BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5))).position(vec2(0.0, 0.5)))
         .unwrap();
     world.step();
     assert_eq!(world.touching_pairs().count(), 1);

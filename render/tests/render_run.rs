@@ -9,10 +9,6 @@ use clockwork2d_render::{
     Colour, OutputFormat, RenderError, RenderOptions, render_run, view_of_world,
 };
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 fn scratch(name: &str) -> PathBuf {
     let dir = std::env::temp_dir().join(format!("cw2d-render-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
@@ -24,10 +20,10 @@ fn scratch(name: &str) -> PathBuf {
 fn falling_ball() -> (World, BodyId) {
     let mut world = World::new(WorldSettings::default());
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(3.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(3.0, 0.5))).position(vec2(0.0, -0.5)))
         .unwrap();
     let ball = world
-        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(v(0.0, 3.0)))
+        .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).position(vec2(0.0, 3.0)))
         .unwrap();
     (world, ball)
 }

@@ -1,28 +1,29 @@
-//! Scene builders and helpers shared by the `world_*` integration tests.
+//! Set-up shared by the integration tests: scene builders (here), edited
+//! files (`file_checksum`), proptest strategies (`fx_strategies`), the
+//! oscillator tests' settings and probes (`oscillators`).
 //!
 //! Every float here is a literal or a test-side measurement converted at the
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
 #![allow(dead_code)] // each test crate uses a different subset
 
-use clockwork2d::prelude::*;
+pub mod file_checksum;
+pub mod fx_strategies;
+pub mod oscillators;
 
-/// Shorthand for a vector of two float literals.
-pub fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
+use clockwork2d::prelude::*;
 
 /// A fixed ground box whose top face is the line y = 0 (half extents
 /// 50 × 0.5, centre (0, -0.5)).
 pub fn add_ground(world: &mut World) -> BodyId {
     world
-        .add_body(BodyDef::fixed(Shape::aabb(v(50.0, 0.5))).position(v(0.0, -0.5)))
+        .add_body(BodyDef::fixed(Shape::aabb(vec2(50.0, 0.5))).position(vec2(0.0, -0.5)))
         .expect("ground")
 }
 
 /// A unit box (half extents 0.5, density 1, so mass 1) at `(x, y)`.
 pub fn add_unit_box(world: &mut World, x: f64, y: f64) -> BodyId {
     world
-        .add_body(BodyDef::dynamic(Shape::aabb(v(0.5, 0.5))).position(v(x, y)))
+        .add_body(BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5))).position(vec2(x, y)))
         .expect("unit box")
 }
 

@@ -15,10 +15,6 @@ pub struct Arena {
     pub spring_box: BodyId,
 }
 
-fn v(x: f64, y: f64) -> Vec2 {
-    Vec2::new(fx(x), fx(y))
-}
-
 /// Builds the arena: walls and ceiling (what the ropes hook on), a stack of
 /// five boxes in the middle, six balls, a box hanging on a radial spring
 /// from the ceiling, and the two players on either side.
@@ -37,12 +33,12 @@ pub fn arena() -> Result<Arena, WorldError> {
         ((0.5, 6.5), (12.5, 6.0)),
     ] {
         world.add_body(
-            BodyDef::fixed(Shape::aabb(v(half.0, half.1))).position(v(centre.0, centre.1)),
+            BodyDef::fixed(Shape::aabb(vec2(half.0, half.1))).position(vec2(centre.0, centre.1)),
         )?;
     }
     for level in 0..5 {
         world.add_body(
-            BodyDef::dynamic(Shape::aabb(v(0.5, 0.5)))
+            BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5)))
                 .position(Vec2::new(Fx::ZERO, fx(0.5).add(Fx::from_int(level))))
                 .friction(fx(0.6)),
         )?;
@@ -60,12 +56,12 @@ pub fn arena() -> Result<Arena, WorldError> {
         balls.push(ball);
     }
     let spring_box = world.add_body(
-        BodyDef::dynamic(Shape::aabb(v(0.4, 0.4)))
-            .position(v(5.0, 8.0))
+        BodyDef::dynamic(Shape::aabb(vec2(0.4, 0.4)))
+            .position(vec2(5.0, 8.0))
             .mass(fx(1.0)),
     )?;
     world.add_constraint(Constraint::radial_spring(
-        Anchor::Point(v(5.0, 12.0)),
+        Anchor::Point(vec2(5.0, 12.0)),
         Anchor::Body(spring_box),
         fx(3.0),
         fx(60.0),
@@ -75,7 +71,7 @@ pub fn arena() -> Result<Arena, WorldError> {
     for (player, x) in players.iter_mut().zip([-8.0, 8.0]) {
         *player = world.add_body(
             BodyDef::dynamic(Shape::circle(fx(0.4)))
-                .position(v(x, 0.4))
+                .position(vec2(x, 0.4))
                 .mass(fx(1.0))
                 .friction(fx(0.3)),
         )?;
