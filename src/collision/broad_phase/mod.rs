@@ -16,7 +16,7 @@
 //! # How, and what it costs
 //!
 //! 1. **Integer keys.** Each coordinate becomes an `i64` whose order is the
-//!    scalar's order ([`order_key`]): for fixed point that is the raw value,
+//!    scalar's order ([`order_key`](item::order_key)): for fixed point that is the raw value,
 //!    so all later work is plain integer comparisons and shifts.
 //! 2. **x order kept between calls.** Bodies move little per substep, so the
 //!    last call's order (slot indices, [`BroadPhase::order`]) is a nearly
@@ -36,7 +36,7 @@
 //!    A pair is seen in every band both proxies are in; it is reported only
 //!    in the band of `max(p.min_y, q.min_y)`, a value inside both y ranges,
 //!    so exactly once. `B` is also raised so that the copies stay under
-//!    `4n` and the band count under [`MAX_BANDS`], which bounds time and
+//!    `4n` and the band count under [`MAX_BANDS`](bands::MAX_BANDS), which bounds time and
 //!    memory for any input (a proxy spanning the world, saturated
 //!    coordinates, everything in one spot).
 //! 4. **Pair sort.** Pairs are packed into `u64` keys and sorted by an LSD
@@ -46,112 +46,21 @@
 //! All buffers live in [`BroadPhase`], kept in the step scratch, so a world
 //! in steady state allocates nothing here.
 
+mod bands;
+mod item;
+mod proxy;
+
+use self::bands::Bands;
+use self::item::{Item, item_of};
+use self::proxy::PAIR_TABLE;
+pub(crate) use self::proxy::{Proxy, ProxyClass};
 use super::pair_sort::sort_keys;
 use crate::math::Scalar;
-
-/// How a proxy takes part in pairing.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum ProxyClass {
-    /// Fixed bodies, and kinematic bodies at rest.
-    Still,
-    /// A sleeping dynamic body.
-    Sleeping,
-    /// A kinematic body with a velocity.
-    MovingKinematic,
-    /// An awake dynamic body.
-    Dynamic,
-}
-
-impl ProxyClass {
-    /// All classes, in the order of their codes (see [`Self::code`]).
-    const ALL: [ProxyClass; 4] = [
-        ProxyClass::Still,
-        ProxyClass::Sleeping,
-        ProxyClass::MovingKinematic,
-        ProxyClass::Dynamic,
-    ];
-
-    /// Whether a pair of these classes needs a contact: something must be
-    /// able to respond (an awake dynamic body), or a moving kinematic body
-    /// must be able to wake a sleeper.
-    #[inline]
-    const fn pairs_with(self, other: ProxyClass) -> bool {
-        use ProxyClass::{Dynamic, MovingKinematic, Sleeping};
-        matches!(
-            (self, other),
-            (Dynamic, _) | (_, Dynamic) | (MovingKinematic, Sleeping) | (Sleeping, MovingKinematic)
-        )
-    }
-
-    /// A small code, `0..4`, indexing [`PAIR_TABLE`].
-    #[inline]
-    const fn code(self) -> u8 {
-        match self {
-            ProxyClass::Still => 0,
-            ProxyClass::Sleeping => 1,
-            ProxyClass::MovingKinematic => 2,
-            ProxyClass::Dynamic => 3,
-        }
-    }
-}
-
-/// [`ProxyClass::pairs_with`] as a bit table: bit `4·a + b` is set when the
-/// classes with codes `a` and `b` pair. One shift and mask in the sweep's
-/// inner loop instead of a match.
-const PAIR_TABLE: u16 = {
-    let mut table = 0u16;
-    let mut a = 0;
-    while a < 4 {
-        let mut b = 0;
-        while b < 4 {
-            if ProxyClass::ALL[a].pairs_with(ProxyClass::ALL[b]) {
-                table |= 1 << (4 * a + b);
-            }
-            b += 1;
-        }
-        a += 1;
-    }
-    table
-};
-
-/// A body's swept bounding box for this substep.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub(crate) struct Proxy<S: Scalar> {
-    pub(crate) min_x: S,
-    pub(crate) max_x: S,
-    pub(crate) min_y: S,
-    pub(crate) max_y: S,
-    pub(crate) index: u32,
-    pub(crate) class: Option<ProxyClass>,
-}
-
-/// Most bands (a power of two). Bounds the per-call band tables (two
-/// `usize` per band) and, with the `4n` bound on band copies, the memory of
-/// the phase. 4096 bands of the median proxy height is far more than any
-/// pile needs; a world taller than that gets taller bands. Also keeps a
-/// band number within `u16` ([`Item::band_min`]).
-const MAX_BANDS: usize = 1 << 12;
 
 /// Marks a slot with no proxy in [`BroadPhase::slot_position`].
 const ABSENT: u32 = u32::MAX;
 /// Marks a slot whose proxy was already placed in the x order.
 const TAKEN: u32 = u32::MAX - 1;
-
-/// A proxy as the phase works on it: coordinates as order keys (see
-/// [`order_key`]), 40 bytes.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-struct Item {
-    min_x: i64,
-    max_x: i64,
-    min_y: i64,
-    max_y: i64,
-    /// Slot index of the body.
-    index: u32,
-    /// The band holding `min_y` (set when the item is copied into bands).
-    band_min: u16,
-    /// [`ProxyClass::code`].
-    class: u8,
-}
 
 /// The broad phase's working memory, kept from call to call. None of it is
 /// state: results never depend on it (a fresh one gives the same pairs), it
@@ -422,136 +331,6 @@ fn sweep(items: &[Item], band: usize, index_bits: u32, keys: &mut Vec<u64>, coun
     *count = n;
 }
 
-/// The band layout of one call: band `k` holds y keys in
-/// `[bottom + k·2^shift, bottom + (k+1)·2^shift)`.
-#[derive(Clone, Copy, Debug)]
-struct Bands {
-    /// The lowest y key of any item.
-    bottom: i64,
-    /// The highest y key of any item.
-    top: i64,
-    /// `log2` of the band height in key units; 64 means one band.
-    shift: u32,
-}
-
-impl Bands {
-    /// Chooses the band height for `items`: the power of two just above
-    /// the median proxy height (a proxy then meets one or two bands, and
-    /// the sweep's work, ~(bands per proxy) × (B + h), is near its
-    /// minimum at B ≈ h), raised if needed so that the copies stay below
-    /// `4n` and the bands below [`MAX_BANDS`]. One pass, integers only.
-    fn choose(items: &[Item]) -> Bands {
-        let mut bottom = i64::MAX;
-        let mut top = i64::MIN;
-        // Proxies by the bit length of their height (0..=64).
-        let mut by_bits = [0usize; 65];
-        let mut height_sum = 0u128;
-        for item in items {
-            let (low, high) = y_span(item);
-            bottom = bottom.min(low);
-            top = top.max(high);
-            let height = high.abs_diff(low);
-            by_bits[(u64::BITS - height.leading_zeros()) as usize] += 1;
-            height_sum += u128::from(height);
-        }
-        if items.is_empty() {
-            return Bands {
-                bottom: 0,
-                top: 0,
-                shift: 64,
-            };
-        }
-        let n = items.len();
-        // Bit length j of the median height h: 2^j > h ≥ 2^(j-1).
-        let mut seen = 0usize;
-        let mut median_bits = 64u32;
-        for (bits, &count) in (0u32..).zip(&by_bits) {
-            seen += count;
-            if 2 * seen >= n {
-                median_bits = bits;
-                break;
-            }
-        }
-        // Copies: a proxy of height h meets at most h/B + 2 bands, so the
-        // total is at most 2n + Σh/B; B > Σh/(2n) keeps it below 4n.
-        let per_band = height_sum / (2 * n as u128);
-        let copies_bits = u128::BITS - per_band.leading_zeros();
-        // Band count: the y range shifted right by `shift` stays below
-        // MAX_BANDS.
-        let range_bits = u64::BITS - top.abs_diff(bottom).leading_zeros();
-        let shift = median_bits
-            .max(copies_bits)
-            .max(range_bits.saturating_sub(MAX_BANDS.trailing_zeros()));
-        Bands { bottom, top, shift }
-    }
-
-    /// The band of a y key in `[bottom, top]`.
-    #[inline]
-    fn band(&self, y: i64) -> usize {
-        // y ≥ bottom, so the difference is exact as u64; the result is
-        // below MAX_BANDS by the choice of shift.
-        y.abs_diff(self.bottom).checked_shr(self.shift).unwrap_or(0) as usize
-    }
-
-    /// The first and last band an item's y range meets.
-    #[inline]
-    fn range(&self, item: &Item) -> (usize, usize) {
-        let (low, high) = y_span(item);
-        (self.band(low), self.band(high))
-    }
-}
-
-/// An item's y range as `(low, high)`, also for an inverted proxy
-/// (`min_y > max_y`, which the pair test treats asymmetrically: its pairs
-/// have `max(p.min_y, q.min_y)` inside this range all the same).
-#[inline]
-fn y_span(item: &Item) -> (i64, i64) {
-    (item.min_y.min(item.max_y), item.min_y.max(item.max_y))
-}
-
-/// The work item of a classed proxy.
-#[inline]
-fn item_of<S: Scalar>(proxy: &Proxy<S>) -> Item {
-    Item {
-        min_x: order_key(proxy.min_x),
-        max_x: order_key(proxy.max_x),
-        min_y: order_key(proxy.min_y),
-        max_y: order_key(proxy.max_y),
-        index: proxy.index,
-        band_min: 0,
-        class: proxy.class.map_or(0, ProxyClass::code),
-    }
-}
-
-/// An `i64` ordered like the scalar: `a < b` ⇔ `order_key(a) <
-/// order_key(b)` and `a == b` ⇔ equal keys (for floats: apart from NaN,
-/// which gets some key and is then ordered by it, where IEEE comparisons
-/// would have made the original sweep's order undefined).
-///
-/// Fixed point: the raw two's complement value, which
-/// [`Scalar::to_hash_bits`] gives sign-extended to 64 bits. Float reference
-/// types: the IEEE bits made monotone (negatives flipped, the sign bit set
-/// on positives), with −0 taken as +0 since they compare equal.
-#[inline]
-fn order_key<S: Scalar>(value: S) -> i64 {
-    if !S::IS_REFERENCE {
-        // Reinterpreting the sign-extended raw value.
-        return value.to_hash_bits() as i64;
-    }
-    let value = if value == S::ZERO { S::ZERO } else { value };
-    // The sign bit of the type's own width (bit 31 for f32, 63 for f64).
-    let sign = S::ONE.to_hash_bits() ^ S::ONE.neg().to_hash_bits();
-    let width_mask = (sign << 1).wrapping_sub(1);
-    let bits = value.to_hash_bits();
-    let unsigned = if bits & sign != 0 {
-        !bits & width_mask
-    } else {
-        bits | sign
-    };
-    // Unsigned order → signed order.
-    (unsigned ^ (1 << 63)) as i64
-}
-
 /// Insertion sort by `(min_x, index)` that gives up once it has moved items
 /// more than `budget` places in total (then returns `false`, leaving a
 /// permutation of the input). Linear on a nearly sorted slice.
@@ -575,5 +354,4 @@ fn insertion_sort_bounded(items: &mut [Item], budget: usize) -> bool {
 }
 
 #[cfg(test)]
-#[path = "broad_phase_tests.rs"]
 mod tests;

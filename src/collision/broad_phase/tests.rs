@@ -9,6 +9,8 @@
 use fixed::types::I48F16;
 use proptest::prelude::*;
 
+use super::bands::MAX_BANDS;
+use super::item::order_key;
 use super::*;
 use crate::math::{Fx, WORLD_LIMIT};
 
