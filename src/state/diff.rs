@@ -69,7 +69,7 @@ pub fn diff_worlds<S: Scalar>(a: &World<S>, b: &World<S>) -> Vec<Difference> {
         constraint_slots: _,     // constraints
         constraint_free_list: _, // constraints
         events: _,               // events
-        scratch: _,              // the step context: derived, never compared
+        step_context: _,         // the step context: derived, never compared
     } = a;
     let mut d = Diff { out: Vec::new() };
     d.world(a, b);

@@ -71,7 +71,7 @@ impl<S: Scalar> World<S> {
             constraint_free_list: _,
             // Events are the last step's output; nothing reads them back.
             events: _,
-            scratch: _,
+            step_context: _,
         } = self;
         settings
             .validate()

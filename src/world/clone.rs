@@ -1,7 +1,7 @@
 //! `Clone` for [`World`]: the state is copied, the step's working memory
 //! is not.
 //!
-//! The step context (`World::scratch`) is derived data: buffers that every
+//! The step context (`World::step_context`) is derived data: buffers that every
 //! step refills, plus the broad phase's x order of the last step, which is
 //! only a starting guess for its sort (any order gives the same pairs). A
 //! restored snapshot starts with an empty one and continues bit-identically,
@@ -26,7 +26,7 @@ impl<S: Scalar> Clone for World<S> {
             constraint_slots: self.constraint_slots.clone(),
             constraint_free_list: self.constraint_free_list.clone(),
             events: self.events.clone(),
-            scratch: StepContext::default(),
+            step_context: StepContext::default(),
         }
     }
 
@@ -42,7 +42,7 @@ impl<S: Scalar> Clone for World<S> {
             constraint_slots,
             constraint_free_list,
             events,
-            scratch: _,
+            step_context: _,
         } = self;
         settings.clone_from(&source.settings);
         *tick = source.tick;

@@ -81,7 +81,7 @@ pub struct World<S: Scalar = Fx> {
     pub(crate) events: Vec<Event>,
     /// Working buffers reused every step (no allocation in steady state);
     /// derived data, not part of the state (never serialised).
-    pub(crate) scratch: StepContext<S>,
+    pub(crate) step_context: StepContext<S>,
 }
 
 impl World<Fx> {
@@ -135,7 +135,7 @@ impl<S: Scalar> World<S> {
             constraint_slots: Vec::new(),
             constraint_free_list: Vec::new(),
             events: Vec::new(),
-            scratch: StepContext::default(),
+            step_context: StepContext::default(),
         })
     }
 

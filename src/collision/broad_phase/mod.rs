@@ -43,7 +43,7 @@
 //!    radix sort ([`super::pair_sort`]): a few linear passes instead of
 //!    `O(p log p)` comparisons.
 //!
-//! All buffers live in [`BroadPhase`], kept in the step scratch, so a world
+//! All buffers live in [`BroadPhase`], kept in the step context, so a world
 //! in steady state allocates nothing here.
 
 mod bands;

@@ -493,8 +493,8 @@ fn scene_proxies_match_the_original() {
     for _ in 0..40 {
         world.step();
     }
-    let proxies = world.scratch.proxies.clone();
-    assert_matches(&mut world.scratch.broad_phase, &proxies);
+    let proxies = world.step_context.proxies.clone();
+    assert_matches(&mut world.step_context.broad_phase, &proxies);
 }
 
 #[test]

@@ -155,7 +155,7 @@ impl<S: Scalar> World<S> {
             // This tick's output, not state that affects a later step.
             events: _,
             // Derived buffers of the step (the step context).
-            scratch: _,
+            step_context: _,
         } = self;
         let mut parts: [H; PART_COUNT] = Default::default();
         let [world, bodies, contacts_part, sleep, allocator, constraints] = &mut parts;

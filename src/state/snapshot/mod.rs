@@ -5,8 +5,8 @@
 //! reads (bodies, the contact cache with its warm-start impulses, sleep
 //! timers and islands, constraints with their impulses, the id allocators
 //! with their free lists, the tick, the settings and the last step's
-//! events). Only the step's scratch buffers are left out; they are rebuilt
-//! from the state at the start of every step.
+//! events). Only the step context (the step's working buffers) is left
+//! out; it is rebuilt from the state at the start of every step.
 //!
 //! ```
 //! use clockwork2d::prelude::*;

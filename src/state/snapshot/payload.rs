@@ -180,7 +180,7 @@ struct PayloadIn<S: Scalar> {
     events: Vec<Event>,
 }
 
-/// Encodes the world's state (everything but the derived scratch buffers).
+/// Encodes the world's state (everything but the derived step context).
 pub(crate) fn encode<S: Scalar>(world: &World<S>) -> Vec<u8> {
     // Exhaustive on purpose: a new field in `World` fails to compile here
     // until it is written to the payload (and checked in `validate`), so a
@@ -195,7 +195,7 @@ pub(crate) fn encode<S: Scalar>(world: &World<S>) -> Vec<u8> {
         constraint_slots,
         constraint_free_list,
         events,
-        scratch: _,
+        step_context: _,
     } = world;
     let mut protos = Vec::new();
     let mut proto_index: BTreeMap<ProtoKey, u32> = BTreeMap::new();
@@ -341,6 +341,6 @@ pub(crate) fn decode<S: Scalar>(payload: &[u8]) -> Result<World<S>, SnapshotErro
         constraint_slots: p.constraint_slots,
         constraint_free_list: p.constraint_free_list,
         events: p.events,
-        scratch: StepContext::default(),
+        step_context: StepContext::default(),
     })
 }

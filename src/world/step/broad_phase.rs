@@ -11,14 +11,14 @@ impl<S: Scalar> World<S> {
     /// grown by the speculative margin for bodies that move.
     pub(super) fn build_proxies(&mut self, h: S) {
         let margin = self.settings.speculative_margin;
-        let scratch = &mut self.scratch;
-        scratch.proxies.clear();
+        let context = &mut self.step_context;
+        context.proxies.clear();
         for (i, slot) in self.slots.iter().enumerate() {
             let Some(body) = &slot.body else { continue };
             if body.frozen {
                 continue;
             }
-            let velocity = scratch.velocities[i];
+            let velocity = context.velocities[i];
             let class = match body.kind {
                 BodyKind::Dynamic if body.awake => ProxyClass::Dynamic,
                 BodyKind::Dynamic => ProxyClass::Sleeping,
@@ -46,7 +46,7 @@ impl<S: Scalar> World<S> {
                 now
             };
             let (lo, hi) = (swept.min(), swept.max());
-            scratch.proxies.push(Proxy {
+            context.proxies.push(Proxy {
                 min_x: lo.x,
                 max_x: hi.x,
                 min_y: lo.y,
@@ -57,11 +57,11 @@ impl<S: Scalar> World<S> {
         }
     }
 
-    /// Candidate pairs of the proxies into `scratch.pairs`, sorted.
+    /// Candidate pairs of the proxies into `context.pairs`, sorted.
     pub(super) fn find_pairs(&mut self) {
-        let scratch = &mut self.scratch;
-        scratch
+        let context = &mut self.step_context;
+        context
             .broad_phase
-            .find_pairs(&scratch.proxies, &mut scratch.pairs);
+            .find_pairs(&context.proxies, &mut context.pairs);
     }
 }

@@ -40,8 +40,8 @@ impl<S: Scalar> World<S> {
                 let body = self.slots[index].body.as_ref()?;
                 Some(AnchorState {
                     position: body.position + anchor.local_point(),
-                    velocity: *self.scratch.velocities.get(index)?,
-                    inverse_mass: *self.scratch.inverse_masses.get(index)?,
+                    velocity: *self.step_context.velocities.get(index)?,
+                    inverse_mass: *self.step_context.inverse_masses.get(index)?,
                     slot: id.index(),
                 })
             }
@@ -79,8 +79,8 @@ impl<S: Scalar> World<S> {
     /// Springs: trapezoidal impulses on the substep velocities.
     pub(crate) fn apply_springs(&mut self, h: S) {
         let n = self.slots.len();
-        self.scratch.spring_dv.clear();
-        self.scratch.spring_dv.resize(n + 1, Vec2::ZERO);
+        self.step_context.spring_dv.clear();
+        self.step_context.spring_dv.resize(n + 1, Vec2::ZERO);
         for ci in 0..self.constraint_slots.len() {
             let Some(constraint) = self.constraint_slots[ci]
                 .entry
@@ -164,7 +164,7 @@ impl<S: Scalar> World<S> {
                 }
                 Constraint::Rope { .. } => continue,
             };
-            let scratch = &mut self.scratch;
+            let context = &mut self.step_context;
             for (state, sign_b) in [(sa, false), (sb, true)] {
                 if !state.inverse_mass.is_positive() {
                     continue;
@@ -172,10 +172,10 @@ impl<S: Scalar> World<S> {
                 let dv = impulse.scale(state.inverse_mass);
                 let dv = if sign_b { dv } else { -dv };
                 let i = state.slot as usize;
-                scratch.velocities[i] += dv;
+                context.velocities[i] += dv;
                 // Positions see only θ of the change: record the (1 − θ)
                 // share to subtract (h times it) from the displacement.
-                scratch.spring_dv[i] += dv.mul_elements(lag);
+                context.spring_dv[i] += dv.mul_elements(lag);
             }
         }
     }
@@ -183,9 +183,9 @@ impl<S: Scalar> World<S> {
     /// Rope rows for this substep: a rope is active when it is taut or can
     /// become taut within the substep (plus the speculative margin).
     pub(crate) fn build_rope_rows(&mut self, h: S, inverse_h: S) {
-        self.scratch.rope_rows.clear();
-        self.scratch.rope_slots.clear();
-        self.scratch.rope_geometry.clear();
+        self.step_context.rope_rows.clear();
+        self.step_context.rope_slots.clear();
+        self.step_context.rope_geometry.clear();
         let margin = self.settings.speculative_margin;
         let threshold = self.settings.restitution_threshold;
         for ci in 0..self.constraint_slots.len() {
@@ -232,11 +232,11 @@ impl<S: Scalar> World<S> {
                 (warm, S::ZERO),
             );
             row.prepare_target(vn, restitution, threshold, h, inverse_h);
-            self.scratch.rope_rows.push(row);
-            self.scratch
+            self.step_context.rope_rows.push(row);
+            self.step_context
                 .rope_slots
                 .push(u32::try_from(ci).unwrap_or(u32::MAX));
-            self.scratch
+            self.step_context
                 .rope_geometry
                 .push((sb.position - sa.position, max_length));
         }
@@ -250,7 +250,12 @@ impl<S: Scalar> World<S> {
                 entry.impulse = S::ZERO;
             }
         }
-        for (row, &ci) in self.scratch.rope_rows.iter().zip(&self.scratch.rope_slots) {
+        for (row, &ci) in self
+            .step_context
+            .rope_rows
+            .iter()
+            .zip(&self.step_context.rope_slots)
+        {
             if let Some(entry) = self
                 .constraint_slots
                 .get_mut(ci as usize)

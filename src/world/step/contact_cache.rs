@@ -12,18 +12,18 @@ impl<S: Scalar> World<S> {
     /// as ended.
     pub(super) fn update_contact_cache(&mut self) {
         let slop = self.settings.linear_slop;
-        let mut fresh = core::mem::take(&mut self.scratch.contacts_next);
+        let mut fresh = core::mem::take(&mut self.step_context.contacts_next);
         fresh.clear();
         // Whether each slot moved this substep, read from a dense array
         // rather than from the bodies (two random body reads per contact).
-        let mut moving = core::mem::take(&mut self.scratch.moving);
+        let mut moving = core::mem::take(&mut self.step_context.moving);
         moving.clear();
         moving.extend(
             self.slots
                 .iter()
                 .map(|slot| slot.body.as_ref().is_some_and(|b| b.is_moving())),
         );
-        let scratch = &self.scratch;
+        let context = &self.step_context;
         let active = |index: u32| moving.get(index as usize).copied().unwrap_or(false);
         // Merge (both sorted by pair): the remembered contacts of pairs that
         // were not simulated, and this substep's contacts.
@@ -32,7 +32,7 @@ impl<S: Scalar> World<S> {
             .iter()
             .filter(|c| !active(c.a) && !active(c.b))
             .peekable();
-        for c in &scratch.constraints {
+        for c in &context.constraints {
             // A pair can be both: a body frozen at the bounds during this
             // substep is no longer active, yet its contact was simulated.
             // The fresh entry wins; the remembered one is dropped.
@@ -41,7 +41,7 @@ impl<S: Scalar> World<S> {
                     fresh.push(*k);
                 }
             }
-            let motion = scratch.displacements[c.b as usize] - scratch.displacements[c.a as usize];
+            let motion = context.displacements[c.b as usize] - context.displacements[c.a as usize];
             let separation = c.separation.add(motion.dot(c.normal));
             fresh.push(CachedContact {
                 a: c.a,
@@ -55,8 +55,8 @@ impl<S: Scalar> World<S> {
             });
         }
         fresh.extend(kept.copied());
-        self.scratch.moving = moving;
-        // Double buffer: the old cache becomes next substep's scratch.
-        self.scratch.contacts_next = core::mem::replace(&mut self.contacts, fresh);
+        self.step_context.moving = moving;
+        // Double buffer: the old cache becomes next substep's spare buffer.
+        self.step_context.contacts_next = core::mem::replace(&mut self.contacts, fresh);
     }
 }

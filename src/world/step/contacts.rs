@@ -32,7 +32,7 @@ impl<S: Scalar> World<S> {
             displacements,
             displacements_before_correction,
             ..
-        } = &mut self.scratch;
+        } = &mut self.step_context;
         displacements_before_correction.clear();
         displacements_before_correction.extend_from_slice(displacements);
     }
@@ -42,15 +42,15 @@ impl<S: Scalar> World<S> {
     /// the instant of contact; the bodies whose motion grew are listed for
     /// [`World::sweep_rebounds`].
     pub(super) fn bounce(&mut self, h: S) {
-        let scratch = &mut self.scratch;
-        scratch.rebounds.clear();
+        let context = &mut self.step_context;
+        context.rebounds.clear();
         apply_bounces(
-            &scratch.constraints,
-            &scratch.bounce_candidates,
+            &context.constraints,
+            &context.bounce_candidates,
             h,
-            &mut scratch.velocities,
-            &mut scratch.displacements,
-            &mut scratch.rebounds,
+            &mut context.velocities,
+            &mut context.displacements,
+            &mut context.rebounds,
         );
     }
 
@@ -80,7 +80,7 @@ impl<S: Scalar> World<S> {
             displacements,
             displacements_before_correction,
             ..
-        } = &mut self.scratch;
+        } = &mut self.step_context;
         for ((d, before), slot) in displacements
             .iter_mut()
             .zip(displacements_before_correction.iter())
@@ -118,7 +118,7 @@ impl<S: Scalar> World<S> {
             constraints,
             displacements,
             ..
-        } = &mut self.scratch;
+        } = &mut self.step_context;
         for _ in 0..2 {
             for c in constraints.iter() {
                 let (ia, ib) = (c.a as usize, c.b as usize);
@@ -162,48 +162,48 @@ impl<S: Scalar> World<S> {
     /// obstacle at once if the rebound goes into it (along the pair's
     /// contact normal), and none if it leaves it (the body it bounced off).
     pub(super) fn sweep_rebounds(&mut self) {
-        if self.scratch.rebounds.is_empty() {
+        if self.step_context.rebounds.is_empty() {
             return;
         }
-        let scratch = &mut self.scratch;
+        let context = &mut self.step_context;
         // One sweep per body: keep each slot's first bounce (its earliest
         // displacement is the start of its rebound).
-        scratch.rebounds.sort_by_key(|r| r.0);
-        scratch.rebounds.dedup_by_key(|r| r.0);
+        context.rebounds.sort_by_key(|r| r.0);
+        context.rebounds.dedup_by_key(|r| r.0);
         let rebounding =
             |slot: u32, list: &[(u32, Vec2<S>)]| list.binary_search_by_key(&slot, |r| r.0).is_ok();
-        scratch.rebound_partners.clear();
-        for &(a, b) in &scratch.pairs {
-            if rebounding(a, &scratch.rebounds) {
-                scratch.rebound_partners.push((a, b));
+        context.rebound_partners.clear();
+        for &(a, b) in &context.pairs {
+            if rebounding(a, &context.rebounds) {
+                context.rebound_partners.push((a, b));
             }
-            if rebounding(b, &scratch.rebounds) {
-                scratch.rebound_partners.push((b, a));
+            if rebounding(b, &context.rebounds) {
+                context.rebound_partners.push((b, a));
             }
         }
-        scratch.rebound_partners.sort_unstable();
-        for &(slot, before) in &scratch.rebounds {
+        context.rebound_partners.sort_unstable();
+        for &(slot, before) in &context.rebounds {
             let Some(body) = self.slots[slot as usize].body.as_ref() else {
                 continue;
             };
             let bullet = body.bullet && body.is_simulated_dynamic();
             let cap = if bullet { MAX_BULLET_IMPACTS - 1 } else { 1 };
-            let first = scratch.rebound_partners.partition_point(|&(s, _)| s < slot);
-            let last = scratch
+            let first = context.rebound_partners.partition_point(|&(s, _)| s < slot);
+            let last = context
                 .rebound_partners
                 .partition_point(|&(s, _)| s <= slot);
-            let partners = &scratch.rebound_partners[first..last];
+            let partners = &context.rebound_partners[first..last];
             let index = slot as usize;
             let mut at = body.position + before;
-            let mut rest = scratch.displacements[index] - before;
-            let mut velocity = scratch.velocities[index];
+            let mut rest = context.displacements[index] - before;
+            let mut velocity = context.velocities[index];
             for impact in 0..cap {
                 let mut earliest: Option<(S, Vec2<S>, u32)> = None;
                 for &(_, other) in partners {
                     let Some(ob) = self.slots[other as usize].body.as_ref() else {
                         continue;
                     };
-                    let other_at = ob.position + scratch.displacements[other as usize];
+                    let other_at = ob.position + context.displacements[other as usize];
                     let hit =
                         match shape_toi(&body.shape, at, rest, &ob.shape, other_at, Vec2::ZERO) {
                             Toi::Hit { t, normal } => Some((t, normal)),
@@ -228,7 +228,7 @@ impl<S: Scalar> World<S> {
                 let travelled = rest.scale(t);
                 at += travelled;
                 let remaining = rest - travelled;
-                let immovable = !scratch.inverse_masses[other as usize].is_positive();
+                let immovable = !context.inverse_masses[other as usize].is_positive();
                 if !bullet || !immovable || impact + 1 == cap {
                     rest = Vec2::ZERO;
                     break;
@@ -242,7 +242,7 @@ impl<S: Scalar> World<S> {
                 // −e·v_n, i.e. v += (1 + e)·v_n·n; the remaining motion's
                 // component into the partner is reflected the same way.
                 let e1 = S::ONE.add(body.restitution.max(ob.restitution));
-                let vn = (scratch.velocities[other as usize] - velocity).dot(normal);
+                let vn = (context.velocities[other as usize] - velocity).dot(normal);
                 if vn.is_negative() {
                     velocity += normal.scale(e1.mul(vn));
                 }
@@ -254,8 +254,8 @@ impl<S: Scalar> World<S> {
                 };
             }
             at += rest;
-            scratch.displacements[index] = at - body.position;
-            scratch.velocities[index] = velocity;
+            context.displacements[index] = at - body.position;
+            context.velocities[index] = velocity;
         }
     }
 }

@@ -13,15 +13,15 @@ impl<S: Scalar> World<S> {
     /// Displacements `v·h`; a bullet's is cut at its earliest time of impact
     /// against anything it was paired with, so it cannot pass through.
     pub(super) fn integrate(&mut self, h: S) {
-        let scratch = &mut self.scratch;
+        let context = &mut self.step_context;
         let mut any_bullet = false;
         for (i, slot) in self.slots.iter().enumerate() {
             let Some(body) = &slot.body else { continue };
             if body.is_moving() {
                 // x' = x + h·v' − h·(1−θ)·Δv_spring: springs get the θ-method
                 // position rule (see crate::constraints).
-                let lagging = scratch.spring_dv[i].scale(h);
-                scratch.displacements[i] = scratch.velocities[i].scale(h) - lagging;
+                let lagging = context.spring_dv[i].scale(h);
+                context.displacements[i] = context.velocities[i].scale(h) - lagging;
                 any_bullet |= body.bullet && body.is_simulated_dynamic();
             }
         }
@@ -29,7 +29,7 @@ impl<S: Scalar> World<S> {
         if !any_bullet {
             return;
         }
-        for &(a, b) in &scratch.pairs {
+        for &(a, b) in &context.pairs {
             for (bullet, other) in [(a, b), (b, a)] {
                 let (Some(bb), Some(ob)) = (
                     self.slots[bullet as usize].body.as_ref(),
@@ -40,8 +40,8 @@ impl<S: Scalar> World<S> {
                 if !bb.bullet || !bb.is_simulated_dynamic() {
                     continue;
                 }
-                let full = scratch.velocities[bullet as usize].scale(h);
-                let other_motion = scratch.displacements[other as usize];
+                let full = context.velocities[bullet as usize].scale(h);
+                let other_motion = context.displacements[other as usize];
                 if let Toi::Hit { t, .. } = shape_toi(
                     &bb.shape,
                     bb.position,
@@ -52,9 +52,9 @@ impl<S: Scalar> World<S> {
                 ) {
                     let cut = full.scale(t);
                     // Keep the shortest cut over all partners.
-                    let current = scratch.displacements[bullet as usize];
+                    let current = context.displacements[bullet as usize];
                     if cut.length_squared_wide() < current.length_squared_wide() {
-                        scratch.displacements[bullet as usize] = cut;
+                        context.displacements[bullet as usize] = cut;
                     }
                 }
             }
@@ -73,9 +73,9 @@ impl<S: Scalar> World<S> {
             if !body.is_moving() {
                 continue;
             }
-            body.position += self.scratch.displacements[i];
+            body.position += self.step_context.displacements[i];
             if body.kind == BodyKind::Dynamic {
-                body.velocity = self.scratch.velocities[i];
+                body.velocity = self.step_context.velocities[i];
             }
             if !bounds.contains_point(body.position) {
                 body.position = body.position.clamp(lo, hi);

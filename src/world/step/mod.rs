@@ -22,7 +22,7 @@
 //! | contact events | [`events`] |
 //!
 //! The phases share the step context ([`crate::solver::StepContext`],
-//! `World::scratch`): derived buffers, never part of the state.
+//! `World::step_context`): derived buffers, never part of the state.
 
 mod broad_phase;
 mod constraints;
@@ -54,7 +54,7 @@ impl<S: Scalar> World<S> {
         self.events.clear();
         let results = commands.iter().map(|c| self.apply(c.clone())).collect();
         self.wake_across_constraints();
-        let mut previous_touching = core::mem::take(&mut self.scratch.touching_before);
+        let mut previous_touching = core::mem::take(&mut self.step_context.touching_before);
         previous_touching.clear();
         previous_touching.extend(
             self.contacts
@@ -72,7 +72,7 @@ impl<S: Scalar> World<S> {
         }
         self.update_sleep();
         self.push_contact_events(&previous_touching);
-        self.scratch.touching_before = previous_touching;
+        self.step_context.touching_before = previous_touching;
         self.events.sort_unstable();
         self.events.dedup();
         self.tick = self.tick.wrapping_add(1);
@@ -85,7 +85,7 @@ impl<S: Scalar> World<S> {
         // paired (both asleep at broad-phase time), so the phase is redone.
         // Each pass wakes at least one island, so this ends.
         loop {
-            self.load_scratch(h);
+            self.load_step_context(h);
             self.apply_springs(h);
             self.build_proxies(h);
             self.find_pairs();

@@ -7,7 +7,7 @@ use crate::solver::StepContext;
 use crate::world::World;
 
 impl<S: Scalar> World<S> {
-    /// The narrow phase ([`NarrowPhase`]) into `scratch.constraints`;
+    /// The narrow phase ([`NarrowPhase`]) into `context.constraints`;
     /// returns the sleeping bodies to wake (then the caller redoes it).
     pub(super) fn build_constraints(&mut self, h: S, inverse_h: S) -> Vec<u32> {
         let settings = &self.settings;
@@ -18,7 +18,7 @@ impl<S: Scalar> World<S> {
             constraints,
             bounce_candidates,
             ..
-        } = &mut self.scratch;
+        } = &mut self.step_context;
         let narrow_phase = NarrowPhase {
             pairs,
             velocities,

@@ -28,7 +28,7 @@ impl<S: Scalar> World<S> {
             }
         }
         let n = self.slots.len();
-        let parents = &mut self.scratch.parents;
+        let parents = &mut self.step_context.parents;
         islands::reset(parents, n);
         for c in &self.contacts {
             if !(c.touching || c.normal_impulse.is_positive()) {
@@ -78,7 +78,7 @@ impl<S: Scalar> World<S> {
             }
         }
         // The island's readiness is its least-rested member.
-        let mut island_time = core::mem::take(&mut self.scratch.island_time);
+        let mut island_time = core::mem::take(&mut self.step_context.island_time);
         island_time.clear();
         island_time.resize(n, S::MAX);
         for i in 0..n {
@@ -112,6 +112,6 @@ impl<S: Scalar> World<S> {
                 self.slots[i].generation,
             )));
         }
-        self.scratch.island_time = island_time;
+        self.step_context.island_time = island_time;
     }
 }

@@ -18,23 +18,23 @@ impl<S: Scalar> World<S> {
     /// Rows grouped by shared bodies (chains, piles) and how each group is
     /// solved, then the warm start: last substep's impulses applied again.
     pub(super) fn group_and_warm_start(&mut self) {
-        let scratch = &mut self.scratch;
-        let slot_count = scratch.velocities.len();
-        scratch
+        let context = &mut self.step_context;
+        let slot_count = context.velocities.len();
+        context
             .rope_groups
-            .regroup(&scratch.rope_rows, slot_count, &mut scratch.parents);
-        scratch
+            .regroup(&context.rope_rows, slot_count, &mut context.parents);
+        context
             .contact_groups
-            .regroup(&scratch.constraints, slot_count, &mut scratch.parents);
-        scratch.rope_groups.classify(&scratch.rope_rows, true);
-        scratch.contact_groups.classify(&scratch.constraints, false);
-        warm_start(&scratch.rope_rows, &mut scratch.velocities);
-        warm_start(&scratch.constraints, &mut scratch.velocities);
+            .regroup(&context.constraints, slot_count, &mut context.parents);
+        context.rope_groups.classify(&context.rope_rows, true);
+        context.contact_groups.classify(&context.constraints, false);
+        warm_start(&context.rope_rows, &mut context.velocities);
+        warm_start(&context.constraints, &mut context.velocities);
     }
 
     /// Velocity iterations over rope rows, then contact rows.
     pub(super) fn solve_velocities(&mut self) {
-        let scratch = &mut self.scratch;
+        let context = &mut self.step_context;
         for _ in 0..self.settings.velocity_iterations {
             let StepContext {
                 rope_rows,
@@ -44,7 +44,7 @@ impl<S: Scalar> World<S> {
                 velocities,
                 rope_block,
                 ..
-            } = scratch;
+            } = context;
             solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block);
             solve_group_list_velocities(constraints, contact_groups, velocities, rope_block);
         }
@@ -54,7 +54,7 @@ impl<S: Scalar> World<S> {
     /// displacements only, so correcting penetration adds no energy.
     pub(super) fn solve_positions(&mut self) {
         let settings = &self.settings;
-        let scratch = &mut self.scratch;
+        let context = &mut self.step_context;
         for _ in 0..settings.position_iterations {
             let StepContext {
                 rope_rows,
@@ -65,7 +65,7 @@ impl<S: Scalar> World<S> {
                 displacements,
                 rope_block,
                 ..
-            } = scratch;
+            } = context;
             relinearise_rope_rows(rope_rows, rope_geometry, displacements);
             solve_group_list_positions(rope_rows, rope_groups, displacements, settings, rope_block);
             solve_group_list_positions(
