@@ -2,10 +2,25 @@
 //! flat so that regrouping every substep reuses the same two buffers and
 //! allocates nothing once they have grown to the scene's size.
 
+use core::ops::Range;
+
 use crate::dynamics::islands;
 use crate::math::Scalar;
 use crate::solver::block_solve::MAX_BLOCK;
 use crate::solver::row::ContactConstraint;
+use crate::solver::tree_solve::{TreePlanner, TreeRow, plan_tree};
+
+/// How a sweep solves one group's normal impulses.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum GroupSolve {
+    /// Sequential impulses, row after row.
+    Sequential,
+    /// The dense block (LDLᵀ) solver: small groups with cycles.
+    Block,
+    /// The exact tree solve, with the plan at this range of
+    /// [`RowGroups::plan`].
+    Tree(Range<usize>),
+}
 
 /// Groups of row indices, each sorted ascending, in the order of their first
 /// row (deterministic). Group `g` is `rows[starts[g]..starts[g + 1]]`.
@@ -15,11 +30,14 @@ pub(crate) struct RowGroups {
     rows: Vec<usize>,
     /// Start of each group in `rows`, plus one final entry `rows.len()`.
     starts: Vec<usize>,
-    /// Per group: whether the velocity and the position sweeps solve it
-    /// directly (block solver) rather than by sequential impulses. Decided
+    /// Per group: how the velocity and the position sweeps solve it. Decided
     /// once per substep by [`classify`](Self::classify): it depends only on
     /// the rows' masses and targets, which the sweeps do not change.
-    direct: Vec<(bool, bool)>,
+    modes: Vec<(GroupSolve, GroupSolve)>,
+    /// The elimination plans of the tree groups, one after another.
+    plans: Vec<TreeRow>,
+    /// Working memory of the tree planner.
+    planner: TreePlanner,
     /// Group of each row while grouping (working memory).
     row_group: Vec<u32>,
     /// Group number of each union-find root while grouping (working memory).
@@ -104,43 +122,78 @@ impl RowGroups {
         self.starts.windows(2).map(|w| &self.rows[w[0]..w[1]])
     }
 
-    /// Decides, per group, how the sweeps solve it. A group of
-    /// 2..=[`MAX_BLOCK`] rows (a chain, a small stack, a heavy box on a
-    /// light one) has its normal impulses solved exactly by the block
-    /// solver when `always_direct` (ropes) or its masses are uneven; single
-    /// rows and large groups (big piles) take sequential impulses, whose
-    /// cost stays linear. The velocity sweeps also leave bouncing groups
-    /// (a restitution target above zero) to sequential impulses: solving
-    /// simultaneous impacts exactly with restitution targets can create
-    /// energy (three balls meeting at once), while the sequential order
-    /// dissipates it; resting and speculative rows (targets ≤ 0) are where
-    /// the exact solve pays off.
+    /// Decides, per group, how the sweeps solve it.
+    ///
+    /// * A group whose bodies and rows form a tree (a stack, a chain of
+    ///   ropes, a bob on the ground) is solved exactly in linear time by
+    ///   [`crate::dynamics::tree_solve`] when `always_direct` (ropes), when
+    ///   it has 3 rows or more, or when its masses are uneven. Sequential
+    ///   impulses need `O(n²)` sweeps to carry a correction along a chain of
+    ///   `n` rows, which is what let a 30-box stack sag; pairs of equal
+    ///   masses converge in a sweep or two and skip the planning.
+    /// * Other groups of 2..=[`MAX_BLOCK`] rows take the dense block solver
+    ///   when `always_direct` or their masses are uneven.
+    /// * The rest (big piles with cycles: pyramids, ball pits) take
+    ///   sequential impulses, whose cost stays linear.
+    ///
+    /// The velocity sweeps leave bouncing groups (a restitution target
+    /// above zero) to sequential impulses: solving simultaneous impacts
+    /// exactly with restitution targets can create energy (three balls
+    /// meeting at once), while the sequential order dissipates it; resting
+    /// and speculative rows (targets ≤ 0) are where the exact solve pays
+    /// off.
     pub(crate) fn classify<S: Scalar>(
         &mut self,
         rows: &[ContactConstraint<S>],
+        slot_count: usize,
         always_direct: bool,
     ) {
-        self.direct.clear();
+        self.modes.clear();
+        self.plans.clear();
         for w in self.starts.windows(2) {
             let group = &self.rows[w[0]..w[1]];
-            // The size test comes first so that big groups skip both scans.
-            let position = (2..=MAX_BLOCK).contains(&group.len())
-                && (always_direct || uneven_masses(rows, group));
-            let velocity = position
-                && !group
+            let position = if group.len() < 2 {
+                GroupSolve::Sequential
+            } else {
+                let wanted = always_direct || group.len() >= 3 || uneven_masses(rows, group);
+                let start = self.plans.len();
+                if wanted && plan_tree(rows, group, slot_count, &mut self.planner, &mut self.plans)
+                {
+                    GroupSolve::Tree(start..self.plans.len())
+                } else if group.len() <= MAX_BLOCK && (always_direct || uneven_masses(rows, group))
+                {
+                    GroupSolve::Block
+                } else {
+                    GroupSolve::Sequential
+                }
+            };
+            let bouncing = position != GroupSolve::Sequential
+                && group
                     .iter()
                     .any(|&ri| rows[ri].target_velocity.is_positive());
-            self.direct.push((velocity, position));
+            let velocity = if bouncing {
+                GroupSolve::Sequential
+            } else {
+                position.clone()
+            };
+            self.modes.push((velocity, position));
         }
     }
 
     /// The groups with their decisions from the last
-    /// [`classify`](Self::classify): `(rows, velocity_direct,
-    /// position_direct)`.
-    pub(crate) fn iter_classified(&self) -> impl Iterator<Item = (&[usize], bool, bool)> {
+    /// [`classify`](Self::classify): `(rows, velocity_solve,
+    /// position_solve)`.
+    pub(crate) fn iter_classified(
+        &self,
+    ) -> impl Iterator<Item = (&[usize], &GroupSolve, &GroupSolve)> {
         self.iter()
-            .zip(&self.direct)
-            .map(|(group, &(velocity, position))| (group, velocity, position))
+            .zip(&self.modes)
+            .map(|(group, (velocity, position))| (group, velocity, position))
+    }
+
+    /// The tree plan rows of a [`GroupSolve::Tree`] range.
+    pub(crate) fn plan(&self, range: &Range<usize>) -> &[TreeRow] {
+        &self.plans[range.clone()]
     }
 }
 

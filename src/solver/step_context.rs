@@ -8,6 +8,7 @@ use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::BlockScratch;
 use crate::solver::row::ContactConstraint;
 use crate::solver::row_groups::RowGroups;
+use crate::solver::tree_solve::TreeScratch;
 
 /// Per-step working memory (the step context).
 #[derive(Clone, Debug, Default)]
@@ -44,6 +45,8 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) contact_groups: RowGroups,
     /// Working memory of the block solver.
     pub(crate) rope_block: BlockScratch<S>,
+    /// Working memory of the tree solves.
+    pub(crate) tree: TreeScratch<S>,
     /// Pairs touching before the tick (for contact events).
     pub(crate) touching_before: Vec<(u32, u32)>,
     /// The other half of the contact cache's double buffer.

@@ -288,6 +288,9 @@ pub(crate) fn relinearise_rope_rows<S: Scalar>(
             continue;
         };
         row.normal = -direction;
+        // The tree solve applies impulses through the push vectors.
+        row.push_a = row.normal.scale(row.inverse_mass_a);
+        row.push_b = row.normal.scale(row.inverse_mass_b);
         row.separation = max_length.sub(length).sub(moved.dot(row.normal));
     }
 }

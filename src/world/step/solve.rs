@@ -10,7 +10,8 @@ use crate::solver::block_solve::{BlockScratch, solve_group_positions, solve_grou
 use crate::solver::row::{
     ContactConstraint, solve_friction_row, solve_position_row, solve_velocity_row, warm_start,
 };
-use crate::solver::row_groups::RowGroups;
+use crate::solver::row_groups::{GroupSolve, RowGroups};
+use crate::solver::tree_solve::{TreeScratch, solve_tree_positions, solve_tree_velocities};
 use crate::world::World;
 use crate::world::WorldSettings;
 
@@ -26,8 +27,14 @@ impl<S: Scalar> World<S> {
         context
             .contact_groups
             .regroup(&context.constraints, slot_count, &mut context.parents);
-        context.rope_groups.classify(&context.rope_rows, true);
-        context.contact_groups.classify(&context.constraints, false);
+        context
+            .rope_groups
+            .classify(&context.rope_rows, slot_count, true);
+        context
+            .contact_groups
+            .classify(&context.constraints, slot_count, false);
+        let row_count = context.rope_rows.len().max(context.constraints.len());
+        context.tree.reserve(slot_count, row_count);
         warm_start(&context.rope_rows, &mut context.velocities);
         warm_start(&context.constraints, &mut context.velocities);
     }
@@ -43,10 +50,11 @@ impl<S: Scalar> World<S> {
                 contact_groups,
                 velocities,
                 rope_block,
+                tree,
                 ..
             } = context;
-            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block);
-            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block);
+            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block, tree);
+            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block, tree);
         }
     }
 
@@ -64,41 +72,49 @@ impl<S: Scalar> World<S> {
                 contact_groups,
                 displacements,
                 rope_block,
+                tree,
                 ..
             } = context;
             relinearise_rope_rows(rope_rows, rope_geometry, displacements);
-            solve_group_list_positions(rope_rows, rope_groups, displacements, settings, rope_block);
+            let mut work = (rope_block, tree);
+            solve_group_list_positions(rope_rows, rope_groups, displacements, settings, &mut work);
             solve_group_list_positions(
                 constraints,
                 contact_groups,
                 displacements,
                 settings,
-                rope_block,
+                &mut work,
             );
         }
     }
 }
 
 /// One velocity pass over grouped rows (ropes or contacts), each group the
-/// way [`RowGroups::classify`] decided: directly (the block solver for the
-/// normal impulses, then friction by sequential impulses) or by sequential
-/// impulses.
+/// way [`RowGroups::classify`] decided: directly (the tree or block solver
+/// for the normal impulses, then friction by sequential impulses) or by
+/// sequential impulses.
 fn solve_group_list_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
     groups: &RowGroups,
     velocities: &mut [Vec2<S>],
     block: &mut BlockScratch<S>,
+    tree: &mut TreeScratch<S>,
 ) {
-    for (group, direct, _) in groups.iter_classified() {
-        if direct {
-            solve_group_velocities(rows, group, velocities, block);
-            for &ri in group {
-                solve_friction_row(&mut rows[ri], velocities);
+    for (group, solve, _) in groups.iter_classified() {
+        match solve {
+            GroupSolve::Sequential => {
+                for &ri in group {
+                    solve_velocity_row(&mut rows[ri], velocities);
+                }
+                continue;
             }
-        } else {
-            for &ri in group {
-                solve_velocity_row(&mut rows[ri], velocities);
+            GroupSolve::Block => solve_group_velocities(rows, group, velocities, block),
+            GroupSolve::Tree(range) => {
+                solve_tree_velocities(rows, group, groups.plan(range), velocities, tree);
             }
+        }
+        for &ri in group {
+            solve_friction_row(&mut rows[ri], velocities);
         }
     }
 }
@@ -109,20 +125,33 @@ fn solve_group_list_positions<S: Scalar>(
     groups: &RowGroups,
     displacements: &mut [Vec2<S>],
     settings: &WorldSettings<S>,
-    block: &mut BlockScratch<S>,
+    (block, tree): &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
 ) {
     let (slop, beta, max) = (
         settings.linear_slop,
         settings.position_correction,
         settings.max_correction,
     );
-    for (group, _, direct) in groups.iter_classified() {
-        if direct {
-            solve_group_positions(rows, group, displacements, slop, beta, max, block);
-        } else {
-            for &ri in group {
-                solve_position_row(&rows[ri], displacements, slop, beta, max);
+    for (group, _, solve) in groups.iter_classified() {
+        match solve {
+            GroupSolve::Sequential => {
+                for &ri in group {
+                    solve_position_row(&rows[ri], displacements, slop, beta, max);
+                }
             }
+            GroupSolve::Block => {
+                solve_group_positions(rows, group, displacements, slop, beta, max, block);
+            }
+            GroupSolve::Tree(range) => solve_tree_positions(
+                rows,
+                group,
+                groups.plan(range),
+                displacements,
+                slop,
+                beta,
+                max,
+                tree,
+            ),
         }
     }
 }
