@@ -31,11 +31,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0xe649c8183b832368),
+    ("stack", 0x9a8b7b04ba0f4eb0),
     ("pyramid", 0x3d01e0036e41895e),
-    ("balls", 0x322195724bcf01bf),
-    ("bullets", 0x8ae034cde28a54b7),
-    ("mixed", 0xa4148b4f85815599),
+    ("balls", 0xd8be665123717b2f),
+    ("bullets", 0x1fc541d2ff7bd5d2),
+    ("mixed", 0xe58cf662a289919e),
 ];
 // END GOLDEN
 
