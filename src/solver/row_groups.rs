@@ -126,7 +126,7 @@ impl RowGroups {
     ///
     /// * A group whose bodies and rows form a tree (a stack, a chain of
     ///   ropes, a bob on the ground) is solved exactly in linear time by
-    ///   [`crate::dynamics::tree_solve`] when `always_direct` (ropes), when
+    ///   [`crate::solver::tree_solve`] when `always_direct` (ropes), when
     ///   it has 3 rows or more, or when its masses are uneven. Sequential
     ///   impulses need `O(n²)` sweeps to carry a correction along a chain of
     ///   `n` rows, which is what let a 30-box stack sag; pairs of equal
