@@ -191,7 +191,6 @@ fn reeling_moves_a_tenth_per_tick_within_its_limits() {
 }
 
 #[test]
-#[ignore = "known regression since the issue-12 contact change (cd368fb): the player ends 5.40 from the anchor of a 3.83 rope while steering into the ledge; tracked as open work in issue 12's closing note"]
 fn the_rope_holds_a_swinging_player_and_letting_go_is_free_fall() {
     let mut p = Playground::new(GRAPPLE_SCENE).unwrap();
     steps(&mut p, 30);

@@ -8,12 +8,14 @@
 //! [`World::bound_corrections`] → [`World::project_out_of_immovable`] →
 //! [`World::bounce`] → [`World::sweep_rebounds`] → write back.
 
+use super::constraints::restore_rope_lengths;
 use crate::collision::{contact_between, shape_toi};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
 use crate::solver::restitution::apply_bounces;
-use crate::world::World;
+use crate::solver::row::ContactConstraint;
+use crate::world::{World, WorldSettings};
 
 /// Most times of impact a bullet takes in one substep: the bounce found by
 /// the contact solver, then up to `MAX_BULLET_IMPACTS − 1` more found by
@@ -23,6 +25,9 @@ use crate::world::World;
 /// tick) between walls 2 units apart, or 1000 u/s between walls 0.55
 /// apart, at 60 Hz.
 pub const MAX_BULLET_IMPACTS: u32 = 32;
+
+/// Rounds of [`World::settle_ropes`] (rope lengths, then immovable bodies).
+const ROPE_SETTLE_PASSES: u32 = 4;
 
 impl<S: Scalar> World<S> {
     /// Keeps the displacements before the position pass, for
@@ -120,30 +125,66 @@ impl<S: Scalar> World<S> {
             ..
         } = &mut self.step_context;
         for _ in 0..2 {
-            for c in constraints.iter() {
-                let (ia, ib) = (c.a as usize, c.b as usize);
-                let (movable_a, movable_b) = (
-                    c.inverse_mass_a.is_positive(),
-                    c.inverse_mass_b.is_positive(),
-                );
-                if movable_a == movable_b {
-                    continue;
-                }
-                let separation = c
-                    .separation
-                    .add((displacements[ib] - displacements[ia]).dot(c.normal));
-                // Depth beyond the slop: −slop − s > 0.
-                let deficit = slop.neg().sub(separation);
-                if !deficit.is_positive() {
-                    continue;
-                }
-                let push = c.normal.scale(deficit);
-                if movable_a {
-                    displacements[ia] -= push;
-                } else {
-                    displacements[ib] += push;
-                }
-            }
+            project_rows_out_of_immovable(constraints, displacements, slop);
+        }
+    }
+
+    /// The last word on positions when ropes are active: each rope that a
+    /// bound correction, a projection out of an immovable body or a rebound
+    /// left longer than its length is pulled back (exactly, to the slop, at
+    /// most `max_correction` per pass), then the bodies are projected out
+    /// of immovable ones again; [`ROPE_SETTLE_PASSES`] such rounds.
+    ///
+    /// Why: the position pass solves ropes and contacts together, but what
+    /// comes after it moves bodies without looking at ropes. The bound on
+    /// corrections ([`World::bound_corrections`]) caps a rope's pull like a
+    /// contact's push (a rope reeled in by 0.1 per tick was followed at
+    /// 0.05 per axis and fell behind without limit), and the projection
+    /// out of immovable bodies and the rebound move a body along a contact
+    /// normal, which may point away from the anchor. A pull along the rope
+    /// cannot fling a crowd (it acts on the rope's two bodies only), so it
+    /// needs no crowd bound; `max_correction` per pass keeps a rope made
+    /// much shorter than its bodies' distance from dragging them across the
+    /// world in one substep (it pulls at up to
+    /// `ROPE_SETTLE_PASSES · max_correction` per substep on top of the
+    /// position pass).
+    ///
+    /// Rope and immovable bodies alternate (projections onto a disc and a
+    /// half-plane): when a body on a taut rope is pressed into a fixed body
+    /// both hold to rounding after the first round unless the rope pulls
+    /// into the surface, and each round shrinks what is left. When no
+    /// position honours both (a rope that passes through a fixed body and
+    /// is shorter than the way around it: ropes do not wrap), the fixed
+    /// body wins and the rope stays long by the overlap.
+    pub(super) fn settle_ropes(&mut self) {
+        if self.step_context.rope_rows.is_empty() {
+            return;
+        }
+        let settings = WorldSettings {
+            position_correction: S::ONE,
+            ..self.settings
+        };
+        let slop = self.settings.linear_slop;
+        for _ in 0..ROPE_SETTLE_PASSES {
+            let StepContext {
+                rope_rows,
+                rope_groups,
+                rope_geometry,
+                constraints,
+                displacements,
+                rope_block,
+                tree,
+                ..
+            } = &mut self.step_context;
+            restore_rope_lengths(
+                rope_rows,
+                rope_groups,
+                rope_geometry,
+                displacements,
+                &settings,
+                &mut (rope_block, tree),
+            );
+            project_rows_out_of_immovable(constraints, displacements, slop);
         }
     }
 
@@ -256,6 +297,40 @@ impl<S: Scalar> World<S> {
             at += rest;
             context.displacements[index] = at - body.position;
             context.velocities[index] = velocity;
+        }
+    }
+}
+
+/// One pass of [`World::project_out_of_immovable`]: every row between a
+/// movable and an immovable body that is deeper than the slop moves the
+/// movable body out along the row's normal, to the slop.
+fn project_rows_out_of_immovable<S: Scalar>(
+    constraints: &[ContactConstraint<S>],
+    displacements: &mut [Vec2<S>],
+    slop: S,
+) {
+    for c in constraints {
+        let (ia, ib) = (c.a as usize, c.b as usize);
+        let (movable_a, movable_b) = (
+            c.inverse_mass_a.is_positive(),
+            c.inverse_mass_b.is_positive(),
+        );
+        if movable_a == movable_b {
+            continue;
+        }
+        let separation = c
+            .separation
+            .add((displacements[ib] - displacements[ia]).dot(c.normal));
+        // Depth beyond the slop: −slop − s > 0.
+        let deficit = slop.neg().sub(separation);
+        if !deficit.is_positive() {
+            continue;
+        }
+        let push = c.normal.scale(deficit);
+        if movable_a {
+            displacements[ia] -= push;
+        } else {
+            displacements[ib] += push;
         }
     }
 }

@@ -15,7 +15,7 @@
 //! | grouping, warm start, velocity iterations | [`solve`] |
 //! | integrate (bullets' time of impact) | [`integrate`] |
 //! | position iterations | [`solve`] |
-//! | bound corrections, out of immovable bodies, bounces, rebound sweep | [`contacts`] |
+//! | bound corrections, out of immovable bodies, bounces, rebound sweep, ropes settled | [`contacts`] |
 //! | write back (bounds: freeze) | [`integrate`] |
 //! | contact cache, rope impulses | [`contact_cache`], [`constraints`] |
 //! | per tick: sleep | [`sleep`] |
@@ -107,6 +107,7 @@ impl<S: Scalar> World<S> {
         self.project_out_of_immovable();
         self.bounce(h);
         self.sweep_rebounds();
+        self.settle_ropes();
         self.write_back();
         self.update_contact_cache();
         self.store_rope_impulses();

@@ -120,7 +120,7 @@ fn solve_group_list_velocities<S: Scalar>(
 }
 
 /// One position pass over grouped rows (same split as the velocities).
-fn solve_group_list_positions<S: Scalar>(
+pub(super) fn solve_group_list_positions<S: Scalar>(
     rows: &[ContactConstraint<S>],
     groups: &RowGroups,
     displacements: &mut [Vec2<S>],
