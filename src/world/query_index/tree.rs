@@ -1,7 +1,7 @@
 //! The bounding-volume tree of a [`QueryIndex`](super::QueryIndex): leaf
 //! boxes, building the tree (median splits, in depth-first order), and the
 //! exact node tests of the ray walk. The exactness argument is in the
-//! module docs of [`query_index`](super).
+//! module docs of [`query_index`](super) and, for the ray tests, of `rays.rs`.
 
 use core::cmp::Ordering;
 
@@ -27,7 +27,7 @@ pub(super) const SAFE_COORDINATE: i32 = 1 << 17;
 /// The margin, in units of `Scalar::EPSILON · (1 + scale)`, by which leaf and
 /// node boxes are grown for ray and point tests. For fixed point one
 /// `EPSILON` is an ulp and circle hits are within about 7 ulps of the circle
-/// (see the module docs), so 64 is a wide safety factor; the `scale` term
+/// (see the module docs of `rays.rs`), so 64 is a wide safety factor; the `scale` term
 /// (the largest coordinate involved) makes the same margin cover the float
 /// reference types, whose rounding is relative. Too large a margin only
 /// costs a few extra node visits, never a wrong answer.
