@@ -15,7 +15,7 @@
 //! ulps), solves from a point near the foot of the perpendicular from the
 //! centre, and forms every square in the wide type, where `m·m` (up to 2³³
 //! within the world bounds) is exact. The derivation and the error analysis
-//! are next to the solver in `segment_cast.rs`.
+//! are next to the solver in `segment_cast/circle.rs`.
 //!
 //! The accuracy is stated on [`ray_circle`].
 
