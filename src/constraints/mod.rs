@@ -53,6 +53,7 @@ pub use anchor::Anchor;
 pub use constraint::Constraint;
 pub use constraint_id::{ConstraintId, ConstraintMarker};
 
+use crate::dynamics::BodyId;
 use crate::math::Scalar;
 
 /// A constraint slot: generation counter and maybe a constraint with its
@@ -72,4 +73,25 @@ pub(crate) struct ConstraintEntry<S: Scalar> {
     /// A rope's accumulated impulse of the last substep (warm start); zero
     /// for springs and slack ropes.
     pub(crate) impulse: S,
+}
+
+/// The two bodies of every live constraint whose anchors are both on bodies,
+/// in slot order (`(a, b)` as [`Constraint::anchors`] gives them).
+/// Constraints with a point anchor join no two bodies and are skipped.
+///
+/// This is how the rest of the engine sees constraints as links between
+/// bodies: waking across them, joining sleep islands, waking a woken body's
+/// partners. The ids are not checked against the body slots; each caller
+/// looks the bodies up with the rule it needs (a generation-checked lookup,
+/// or the slot alone).
+pub(crate) fn constraint_body_pairs<S: Scalar>(
+    slots: &[ConstraintSlot<S>],
+) -> impl Iterator<Item = (BodyId, BodyId)> + '_ {
+    slots
+        .iter()
+        .filter_map(|slot| slot.entry.as_ref())
+        .filter_map(|entry| {
+            let (a, b) = entry.constraint.anchors();
+            Some((a.body()?, b.body()?))
+        })
 }

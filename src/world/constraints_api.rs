@@ -1,7 +1,9 @@
 //! Adding, removing and reading constraints.
 
 use super::{World, WorldError};
-use crate::constraints::{Anchor, Constraint, ConstraintEntry, ConstraintId, ConstraintSlot};
+use crate::constraints::{
+    Anchor, Constraint, ConstraintEntry, ConstraintId, ConstraintSlot, constraint_body_pairs,
+};
 use crate::dynamics::BodyKind;
 use crate::math::{Scalar, WORLD_LIMIT};
 
@@ -207,16 +209,14 @@ impl<S: Scalar> World<S> {
 impl<S: Scalar> World<S> {
     /// Wakes every body joined by a constraint to the body in slot `index`.
     pub(crate) fn wake_constraint_partners(&mut self, index: u32) {
-        let partners: Vec<u32> = self
-            .constraint_slots
-            .iter()
-            .filter_map(|s| s.entry.as_ref())
-            .filter_map(|e| {
-                let (a, b) = e.constraint.anchors();
-                match (a.body(), b.body()) {
-                    (Some(x), Some(y)) if x.index() == index => Some(y.index()),
-                    (Some(x), Some(y)) if y.index() == index => Some(x.index()),
-                    _ => None,
+        let partners: Vec<u32> = constraint_body_pairs(&self.constraint_slots)
+            .filter_map(|(x, y)| {
+                if x.index() == index {
+                    Some(y.index())
+                } else if y.index() == index {
+                    Some(x.index())
+                } else {
+                    None
                 }
             })
             .collect();

@@ -6,7 +6,7 @@
 //! contact solver's indexing without special cases.
 
 use crate::constraints::spring::{spring_impulse, theta_for};
-use crate::constraints::{Anchor, Constraint};
+use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::BlockScratch;
 use crate::solver::row::{ContactConstraint, effective_mass};
@@ -56,15 +56,7 @@ impl<S: Scalar> World<S> {
     /// constraint never pulls against a frozen sleeper.
     pub(crate) fn wake_across_constraints(&mut self) {
         let mut to_wake = Vec::new();
-        for entry in self
-            .constraint_slots
-            .iter()
-            .filter_map(|s| s.entry.as_ref())
-        {
-            let (a, b) = entry.constraint.anchors();
-            let (Some(ia), Some(ib)) = (a.body(), b.body()) else {
-                continue;
-            };
+        for (ia, ib) in constraint_body_pairs(&self.constraint_slots) {
             let (Some(ba), Some(bb)) = (self.body(ia), self.body(ib)) else {
                 continue;
             };

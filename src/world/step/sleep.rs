@@ -1,5 +1,6 @@
 //! Phase "sleep" (once per tick): islands of slow bodies fall asleep.
 
+use crate::constraints::constraint_body_pairs;
 use crate::dynamics::{BodyId, BodyKind, islands};
 use crate::math::{Scalar, Vec2};
 use crate::world::{Event, World};
@@ -46,15 +47,7 @@ impl<S: Scalar> World<S> {
             }
         }
         // Constraints join islands like touching contacts.
-        for entry in self
-            .constraint_slots
-            .iter()
-            .filter_map(|s| s.entry.as_ref())
-        {
-            let (a, b) = entry.constraint.anchors();
-            let (Some(ia), Some(ib)) = (a.body(), b.body()) else {
-                continue;
-            };
+        for (ia, ib) in constraint_body_pairs(&self.constraint_slots) {
             let both = [ia, ib].iter().all(|id| {
                 self.slots
                     .get(id.index() as usize)
