@@ -125,6 +125,36 @@ pub(crate) struct BlockScratch<S: Scalar> {
     active: Vec<usize>,
 }
 
+impl<S: Scalar> BlockScratch<S> {
+    /// The one block solve shared by the velocity and position passes:
+    /// builds `A` over the active rows ([`coupling`]) and the right-hand side
+    /// `e_i = rhs(row_i)`, and solves `A x = e` (`x` is left in `self.rhs`,
+    /// in the order of `self.active`). `false` when no row is active
+    /// (nothing built, nothing solved).
+    fn solve_active(
+        &mut self,
+        rows: &[ContactConstraint<S>],
+        mut rhs: impl FnMut(&ContactConstraint<S>) -> S,
+    ) -> bool {
+        let m = self.active.len();
+        if m == 0 {
+            return false;
+        }
+        self.matrix.clear();
+        self.matrix.resize(m * m, S::ZERO);
+        self.rhs.clear();
+        for (i, &ri) in self.active.iter().enumerate() {
+            let row = &rows[ri];
+            self.rhs.push(rhs(row));
+            for (j, &rj) in self.active.iter().enumerate() {
+                self.matrix[i * m + j] = coupling(row, &rows[rj]);
+            }
+        }
+        solve_ldlt(&mut self.matrix, &mut self.rhs, m);
+        true
+    }
+}
+
 /// One exact velocity solve of each group (groups of one, and groups above
 /// [`MAX_BLOCK`], take the sequential-impulse path in the caller).
 pub(crate) fn solve_group_velocities<S: Scalar>(
@@ -136,22 +166,14 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
     work.active.clear();
     work.active.extend_from_slice(group);
     for _ in 0..ROUNDS {
-        let m = work.active.len();
-        if m == 0 {
+        // e_i = target_i − J_i v: the velocity change row i still needs.
+        let solved = work.solve_active(rows, |row| {
+            let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
+            row.target_velocity.sub(vn)
+        });
+        if !solved {
             return;
         }
-        work.matrix.clear();
-        work.matrix.resize(m * m, S::ZERO);
-        work.rhs.clear();
-        for (i, &ri) in work.active.iter().enumerate() {
-            let row = &rows[ri];
-            let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
-            work.rhs.push(row.target_velocity.sub(vn));
-            for (j, &rj) in work.active.iter().enumerate() {
-                work.matrix[i * m + j] = coupling(row, &rows[rj]);
-            }
-        }
-        solve_ldlt(&mut work.matrix, &mut work.rhs, m);
         // Release rows that would push (their accumulated impulse would
         // turn negative): zero them, and re-solve the others.
         let mut released = Vec::new();
@@ -205,20 +227,11 @@ pub(crate) fn solve_group_positions<S: Scalar>(
             .filter(|&ri| correction_of(&rows[ri], displacements).is_negative()),
     );
     for _ in 0..ROUNDS {
-        let m = work.active.len();
-        if m == 0 {
+        // e_i = −correction_i: the stretch row i must take back.
+        let solved = work.solve_active(rows, |row| correction_of(row, displacements).neg());
+        if !solved {
             return;
         }
-        work.matrix.clear();
-        work.matrix.resize(m * m, S::ZERO);
-        work.rhs.clear();
-        for (i, &ri) in work.active.iter().enumerate() {
-            work.rhs.push(correction_of(&rows[ri], displacements).neg());
-            for (j, &rj) in work.active.iter().enumerate() {
-                work.matrix[i * m + j] = coupling(&rows[ri], &rows[rj]);
-            }
-        }
-        solve_ldlt(&mut work.matrix, &mut work.rhs, m);
         if work.rhs.iter().all(|x| !x.is_negative()) {
             for (i, &ri) in work.active.iter().enumerate() {
                 apply_impulse(&rows[ri], work.rhs[i], displacements);
