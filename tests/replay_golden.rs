@@ -31,11 +31,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0x9a8b7b04ba0f4eb0),
+    ("stack", 0xa8debe5369f84f95),
     ("pyramid", 0x3d01e0036e41895e),
-    ("balls", 0xd8be665123717b2f),
+    ("balls", 0xa1c461004013373c),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0xe58cf662a289919e),
+    ("mixed", 0x2c1f3970365c4bf6),
 ];
 // END GOLDEN
 

@@ -53,8 +53,16 @@ impl<S: Scalar> World<S> {
                 tree,
                 ..
             } = context;
-            solve_group_list_velocities(rope_rows, rope_groups, velocities, rope_block, tree);
-            solve_group_list_velocities(constraints, contact_groups, velocities, rope_block, tree);
+            let slop = self.settings.linear_slop;
+            solve_group_list_velocities(rope_rows, rope_groups, velocities, slop, rope_block, tree);
+            solve_group_list_velocities(
+                constraints,
+                contact_groups,
+                velocities,
+                slop,
+                rope_block,
+                tree,
+            );
         }
     }
 
@@ -97,6 +105,7 @@ fn solve_group_list_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
     groups: &RowGroups,
     velocities: &mut [Vec2<S>],
+    slop: S,
     block: &mut BlockScratch<S>,
     tree: &mut TreeScratch<S>,
 ) {
@@ -110,7 +119,7 @@ fn solve_group_list_velocities<S: Scalar>(
             }
             GroupSolve::Block => solve_group_velocities(rows, group, velocities, block),
             GroupSolve::Tree(range) => {
-                solve_tree_velocities(rows, group, groups.plan(range), velocities, tree);
+                solve_tree_velocities(rows, group, groups.plan(range), velocities, slop, tree);
             }
         }
         for &ri in group {
