@@ -140,12 +140,13 @@ impl<S: Scalar> BlockScratch<S> {
         if m == 0 {
             return false;
         }
+        self.rhs.clear();
+        self.rhs
+            .extend(self.active.iter().map(|&ri| rhs(&rows[ri])));
         self.matrix.clear();
         self.matrix.resize(m * m, S::ZERO);
-        self.rhs.clear();
         for (i, &ri) in self.active.iter().enumerate() {
             let row = &rows[ri];
-            self.rhs.push(rhs(row));
             for (j, &rj) in self.active.iter().enumerate() {
                 self.matrix[i * m + j] = coupling(row, &rows[rj]);
             }
