@@ -23,6 +23,9 @@ use clockwork2d::math::{Fx, Scalar, WideScalar, fx};
 use fixed::types::{I32F32, I48F16, I64F64, I96F32};
 use proptest::prelude::*;
 
+mod common;
+use common::raw_fixed::{Fixed, RAW_MAX, WideFixed, sat};
+
 /// Cases per property (proptest's default is 256).
 const CASES: u32 = 8192;
 
@@ -30,69 +33,7 @@ const CASES: u32 = 8192;
 // Raw-bit access for the reference computations.
 // ---------------------------------------------------------------------------
 
-/// A fixed-point scalar seen as raw bits with `FRAC` fraction bits.
-trait Fixed: Scalar<Wide: WideFixed> {
-    const FRAC: u32;
-    fn raw(self) -> i128;
-    fn from_raw(bits: i64) -> Self;
-}
-
-/// A fixed-point wide type seen as raw `i128` bits with `FRAC` fraction bits.
-trait WideFixed: WideScalar {
-    const FRAC: u32;
-    fn raw(self) -> i128;
-    fn from_raw(bits: i128) -> Self;
-}
-
-impl Fixed for I32F32 {
-    const FRAC: u32 = 32;
-    fn raw(self) -> i128 {
-        self.to_bits().into()
-    }
-    fn from_raw(bits: i64) -> Self {
-        Self::from_bits(bits)
-    }
-}
-
-impl Fixed for I48F16 {
-    const FRAC: u32 = 16;
-    fn raw(self) -> i128 {
-        self.to_bits().into()
-    }
-    fn from_raw(bits: i64) -> Self {
-        Self::from_bits(bits)
-    }
-}
-
-impl WideFixed for I64F64 {
-    const FRAC: u32 = 64;
-    fn raw(self) -> i128 {
-        self.to_bits()
-    }
-    fn from_raw(bits: i128) -> Self {
-        Self::from_bits(bits)
-    }
-}
-
-impl WideFixed for I96F32 {
-    const FRAC: u32 = 32;
-    fn raw(self) -> i128 {
-        self.to_bits()
-    }
-    fn from_raw(bits: i128) -> Self {
-        Self::from_bits(bits)
-    }
-}
-
-/// Clamps an exact raw result to the narrow range (both narrow types store
-/// an `i64`, so their MIN/MAX are `i64::MIN`/`i64::MAX` raw).
-fn sat(v: i128) -> i128 {
-    v.clamp(RAW_MIN, RAW_MAX)
-}
-
-/// Raw bits of both narrow types' MIN and MAX.
-const RAW_MIN: i128 = i64::MIN as i128;
-const RAW_MAX: i128 = i64::MAX as i128;
+// `Fixed`, `WideFixed`, `sat`, `RAW_MIN`/`RAW_MAX`: tests/common/raw_fixed.rs.
 
 /// Fraction bits dropped when narrowing `S::Wide` to `S`.
 fn narrow_shift<S: Fixed>() -> u32 {

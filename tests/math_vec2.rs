@@ -11,9 +11,12 @@
 //! default of 256.
 
 use clockwork2d::math::WORLD_LIMIT;
-use clockwork2d::math::{Fx, Scalar, Vec2, WideScalar, fx, vec2};
-use fixed::types::{I32F32, I48F16, I64F64, I96F32};
+use clockwork2d::math::{Fx, Scalar, Vec2, fx, vec2};
+use fixed::types::{I32F32, I48F16, I64F64};
 use proptest::prelude::*;
+
+mod common;
+use common::raw_fixed::{Fixed, RAW_MAX, RAW_MIN, WideFixed, sat};
 
 /// Cases per property (proptest's default is 256).
 const CASES: u32 = 8192;
@@ -21,61 +24,11 @@ const CASES: u32 = 8192;
 /// f64 unit roundoff, 2⁻⁵³.
 const U: f64 = 1.0 / 9_007_199_254_740_992.0;
 
-/// Raw bits of both narrow types' MIN and MAX (both store an `i64`).
-const RAW_MIN: i128 = i64::MIN as i128;
-const RAW_MAX: i128 = i64::MAX as i128;
-
 // ---------------------------------------------------------------------------
 // Raw-bit access.
 // ---------------------------------------------------------------------------
 
-/// A fixed-point scalar seen as raw bits with `FRAC` fraction bits.
-trait Fixed: Scalar<Wide: WideFixed> {
-    const FRAC: u32;
-    fn raw(self) -> i128;
-    fn from_raw(bits: i64) -> Self;
-}
-
-/// A fixed-point wide type seen as raw `i128` bits.
-trait WideFixed: WideScalar {
-    fn raw(self) -> i128;
-}
-
-impl Fixed for I32F32 {
-    const FRAC: u32 = 32;
-    fn raw(self) -> i128 {
-        self.to_bits().into()
-    }
-    fn from_raw(bits: i64) -> Self {
-        Self::from_bits(bits)
-    }
-}
-
-impl Fixed for I48F16 {
-    const FRAC: u32 = 16;
-    fn raw(self) -> i128 {
-        self.to_bits().into()
-    }
-    fn from_raw(bits: i64) -> Self {
-        Self::from_bits(bits)
-    }
-}
-
-impl WideFixed for I64F64 {
-    fn raw(self) -> i128 {
-        self.to_bits()
-    }
-}
-
-impl WideFixed for I96F32 {
-    fn raw(self) -> i128 {
-        self.to_bits()
-    }
-}
-
-fn sat(v: i128) -> i128 {
-    v.clamp(RAW_MIN, RAW_MAX)
-}
+// `Fixed`, `WideFixed`, `sat`, `RAW_MIN`/`RAW_MAX`: tests/common/raw_fixed.rs.
 
 fn vec<S: Fixed>((x, y): (i64, i64)) -> Vec2<S> {
     Vec2::new(S::from_raw(x), S::from_raw(y))

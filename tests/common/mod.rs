@@ -1,6 +1,7 @@
 //! Set-up shared by the integration tests: scene builders (here), edited
 //! files (`file_checksum`), proptest strategies (`fx_strategies`), the
-//! oscillator tests' settings and probes (`oscillators`).
+//! oscillator tests' settings and probes (`oscillators`), raw-bit access to
+//! the fixed-point types for exact reference arithmetic (`raw_fixed`).
 //!
 //! Every float here is a literal or a test-side measurement converted at the
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
@@ -9,6 +10,7 @@
 pub mod file_checksum;
 pub mod fx_strategies;
 pub mod oscillators;
+pub mod raw_fixed;
 
 use clockwork2d::prelude::*;
 
