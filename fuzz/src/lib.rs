@@ -14,4 +14,6 @@
 
 pub mod frame;
 pub mod numbers;
+pub mod overlap;
 pub mod roundtrip;
+pub mod world_script;

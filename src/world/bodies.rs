@@ -39,6 +39,7 @@ impl<S: Scalar> World<S> {
                 index
             }
         };
+        self.wake_sleepers_overlapping(index);
         Ok(self.id_of(index))
     }
 
@@ -186,6 +187,37 @@ impl<S: Scalar> World<S> {
             .collect();
         for n in neighbours {
             self.wake_index(n);
+        }
+    }
+
+    /// Wakes every sleeping island with a member whose bounding box overlaps
+    /// or touches that of the body in slot `index` (just spawned or
+    /// teleported). A sleeping body takes no part in the step, so a body
+    /// that appears on top of it would otherwise stay inside it until
+    /// something else woke it: a fixed body spawned over a sleeping ball
+    /// held it overlapped for good (found by the `world_commands` fuzz
+    /// target).
+    pub(crate) fn wake_sleepers_overlapping(&mut self, index: u32) {
+        let Some(Some(body)) = self.slots.get(index as usize).map(|s| s.body.as_ref()) else {
+            return;
+        };
+        let reach = body.aabb();
+        let touched: Vec<u32> = self
+            .sleeping_islands
+            .values()
+            .filter_map(|members| {
+                members.iter().copied().find(|&m| {
+                    m != index
+                        && self
+                            .slots
+                            .get(m as usize)
+                            .and_then(|s| s.body.as_ref())
+                            .is_some_and(|b| b.aabb().overlaps(&reach))
+                })
+            })
+            .collect();
+        for m in touched {
+            self.wake_index(m);
         }
     }
 

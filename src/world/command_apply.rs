@@ -53,13 +53,15 @@ impl<S: Scalar> World<S> {
                 self.check_in_bounds(position)?;
                 let index_u32 = body.index();
                 // Wake what touched it at its old place (it may have been a
-                // support), then move it and wake it.
+                // support), then move it and wake it and whatever sleeps
+                // where it lands.
                 self.wake_neighbours(index_u32);
                 if let Some(b) = self.slots[index].body.as_mut() {
                     b.position = position;
                     b.frozen = false;
                 }
                 self.wake_index(index_u32);
+                self.wake_sleepers_overlapping(index_u32);
                 Ok(CommandOutcome::Applied)
             }
             Command::AddConstraint(constraint) => self
