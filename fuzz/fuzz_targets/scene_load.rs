@@ -9,6 +9,7 @@
 #![no_main]
 
 use clockwork2d::prelude::{Fx, World};
+use clockwork2d_fuzz::cost::step_within;
 use clockwork2d_fuzz::roundtrip::assert_roundtrip;
 use clockwork2d_scene::{MAX_SCENE_BODIES, Scene, SceneError};
 use libfuzzer_sys::fuzz_target;
@@ -16,8 +17,12 @@ use libfuzzer_sys::fuzz_target;
 /// Scenes with more bodies than this are only checked for the refusal
 /// above the limit (building a million bodies is bounded but slow).
 const BUILD_BUDGET: u64 = 2_000;
-/// Ticks a built world is stepped.
-const TICKS: u32 = 3;
+/// Ticks a built world is stepped (within the budget).
+const TICKS: u64 = 3;
+/// Most pair-ticks spent stepping (`src/cost.rs`): a scene may place its
+/// bodies on top of each other, and a step costs about 3 µs per touching
+/// pair.
+const STEP_BUDGET: u64 = 150_000;
 
 fuzz_target!(|data: &[u8]| {
     let Ok(text) = std::str::from_utf8(data) else {
@@ -47,9 +52,7 @@ fuzz_target!(|data: &[u8]| {
         again.as_ref() == Ok(&scene),
         "the scene does not round-trip through RON: {again:?}"
     );
-    for _ in 0..TICKS {
-        world.step();
-    }
+    step_within(&mut world, TICKS, STEP_BUDGET, |_, _| {});
     let copy: World<Fx> = assert_roundtrip(&world, "built scene");
     drop(copy);
 });
