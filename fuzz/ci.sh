@@ -4,6 +4,13 @@
 # (default 60) starting from the committed seeds in fuzz/seeds/<target>/.
 # Any crash, panic, timeout or out-of-memory fails the step.
 #
+# `-seed=1`: libFuzzer's mutations are then a fixed sequence (given the
+# binary and the seeds), so a run tries the same inputs on every machine,
+# a slower machine a prefix of them: the step cannot flake on an input
+# that a longer local run (`FUZZ_SECONDS=600 bash fuzz/ci.sh`) has not
+# tried. Time per input is bounded by the targets' budgets (see
+# README.md), far below `-timeout=30` even on a loaded machine.
+#
 # `--sanitizer none`: CI has only a stable toolchain, and AddressSanitizer
 # (cargo-fuzz's default) needs nightly's -Zsanitizer. The library forbids
 # unsafe code, so the sanitizer would watch only the dependencies; the
@@ -31,7 +38,7 @@ for target in $(cargo fuzz list); do
     mkdir -p "$scratch/$target" "$scratch/artifacts/$target"
     status=0
     cargo fuzz run --sanitizer none "$target" "$scratch/$target" "seeds/$target" -- \
-        -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
+        -seed=1 -max_total_time="$seconds" -timeout=30 -rss_limit_mb=2048 \
         -print_final_stats=1 -artifact_prefix="$scratch/artifacts/$target/" \
         > "$scratch/$target.log" 2>&1 || status=$?
     grep -E '^#[0-9]+[[:space:]]+(INITED|DONE)|^stat::|^Done ' "$scratch/$target.log" || true

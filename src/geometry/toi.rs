@@ -75,6 +75,14 @@ use crate::math::{Scalar, Vec2};
 /// 5e-8. Near-grazing contacts have an ill-conditioned `t` (as in the ray
 /// casts), but the contact position stays within that bound.
 ///
+/// A normal from a circle (circle–circle, or a circle at a box's corner)
+/// is the cast's hit point minus the centre over the Minkowski radius `R`
+/// (`ra + rb`, or the circle's radius): the point is off by the bound
+/// above plus an ulp per component, so the normal's direction and length
+/// are within about `(bound + 2 ulps) / R` — a few ulps for `R ≥ 1`, but
+/// only roughly unit when `R` is a few ulps (like the contact normals'
+/// `ulp·(1 + 1/L)`).
+///
 /// ```
 /// use clockwork2d::geometry::*;
 /// use clockwork2d::prelude::*;
