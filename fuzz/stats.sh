@@ -2,11 +2,17 @@
 # Sums fuzz/logs/stats.tsv (written by long-session.sh) per target: runs,
 # CPU seconds, wall seconds, executions, overall exec per CPU second, the
 # largest cov and ft seen, and runs that crashed.
+#
+#   bash fuzz/stats.sh [SINCE]
+#
+# SINCE (an ISO time such as 2026-01-31T09:00:00Z) counts only the runs
+# started at or after it, e.g. one round of long-session.sh (a full pass).
 set -euo pipefail
 cd "$(dirname "$0")"
-python3 - <<'PY'
-import csv
-rows = list(csv.DictReader(open("logs/stats.tsv"), delimiter="\t"))
+SINCE=${1:-} python3 - <<'PY'
+import csv, os
+since = os.environ.get("SINCE", "")
+rows = [r for r in csv.DictReader(open("logs/stats.tsv"), delimiter="\t") if r["start"] >= since]
 per = {}
 for r in rows:
     p = per.setdefault(r["target"], dict(runs=0, cpu=0.0, wall=0.0, execs=0, cov=0, ft=0, crashes=0))
