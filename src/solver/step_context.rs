@@ -4,6 +4,7 @@
 use super::restitution::BounceCandidate;
 use crate::collision::CachedContact;
 use crate::collision::{BroadPhase, Proxy};
+use crate::constraints::spring_solve::SpringScratch;
 use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::BlockScratch;
 use crate::solver::row::ContactConstraint;
@@ -32,6 +33,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// The part `(1 − θ)·Δv` of the velocity change each slot received from
     /// springs this substep that its position does not follow (θ-method).
     pub(crate) spring_dv: Vec<Vec2<S>>,
+    /// The spring rows and their solve's buffers.
+    pub(crate) springs: SpringScratch<S>,
     /// Active rope rows, solved in the same loop as the contacts.
     pub(crate) rope_rows: Vec<ContactConstraint<S>>,
     /// The constraint slot of each rope row.

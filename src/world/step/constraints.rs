@@ -5,7 +5,7 @@
 //! body) with zero velocity and zero inverse mass, so rope rows share the
 //! contact solver's indexing without special cases.
 
-use crate::constraints::spring::{spring_impulse, theta_for};
+use crate::constraints::spring_solve::solve_spring_rows;
 use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::BlockScratch;
@@ -72,11 +72,19 @@ impl<S: Scalar> World<S> {
         }
     }
 
-    /// Springs: trapezoidal impulses on the substep velocities.
+    /// Springs: every spring row of the substep solved together by the
+    /// θ-method (see [`crate::constraints`], "Why springs are solved
+    /// together"): rows built here, θ per row and per slot, Gauss–Seidel
+    /// sweeps in `constraints::spring_solve`, and the `(1 − θ_b)·Δv` share
+    /// the positions do not follow recorded in `spring_dv`.
     pub(crate) fn apply_springs(&mut self, h: S) {
         let n = self.slots.len();
-        self.step_context.spring_dv.clear();
-        self.step_context.spring_dv.resize(n + 1, Vec2::ZERO);
+        let mut scratch = core::mem::take(&mut self.step_context.springs);
+        scratch.rows.clear();
+        scratch.pending_radial.clear();
+        scratch.body_theta.clear();
+        scratch.body_theta.resize(n + 1, S::ONE.half());
+        let mut any = false;
         for ci in 0..self.constraint_slots.len() {
             let Some(constraint) = self.constraint_slots[ci]
                 .entry
@@ -93,9 +101,9 @@ impl<S: Scalar> World<S> {
             if !w.is_positive() {
                 continue;
             }
-            let relative_velocity = sb.velocity - sa.velocity;
-            // λ per unit of inverse mass: the impulse on b (−λ on a).
-            let (impulse, lag) = match constraint {
+            any = true;
+            let ends = ((sa.slot, sb.slot), (sa.inverse_mass, sb.inverse_mass));
+            match constraint {
                 Constraint::BendySpring {
                     rest_offset,
                     stiffness,
@@ -103,29 +111,7 @@ impl<S: Scalar> World<S> {
                     ..
                 } => {
                     let stretch = sb.position - sa.position - rest_offset;
-                    let (tx, ty) = (theta_for(stiffness.x, w, h), theta_for(stiffness.y, w, h));
-                    let lambda = Vec2::new(
-                        spring_impulse(
-                            stretch.x,
-                            relative_velocity.x,
-                            w,
-                            stiffness.x,
-                            damping,
-                            h,
-                            tx,
-                        ),
-                        spring_impulse(
-                            stretch.y,
-                            relative_velocity.y,
-                            w,
-                            stiffness.y,
-                            damping,
-                            h,
-                            ty,
-                        ),
-                    );
-                    // Share of Δv that positions do not see: (1 − θ) per axis.
-                    (lambda, Vec2::new(S::ONE.sub(tx), S::ONE.sub(ty)))
+                    scratch.push_row(ends, None, stretch, (stiffness, damping), h);
                 }
                 Constraint::RadialSpring {
                     rest_length,
@@ -133,47 +119,86 @@ impl<S: Scalar> World<S> {
                     damping,
                     ..
                 } => {
-                    let theta = theta_for(stiffness, w, h);
-                    let lag = S::ONE.sub(theta);
                     let offset = sb.position - sa.position;
-                    let length = offset.length();
-                    // The impulse acts along the pole where the θ-method
-                    // evaluates the force: the position moves by
-                    // h·(v + θ·Δv), so the pole is taken at
-                    // r + (1−θ)·h·v. An impulse along r itself would change
-                    // r × v by (1−θ)·h·(v × v') every step — always the same
-                    // sign while the body orbits, so the swing would gain
-                    // angular momentum and energy without bound. Along this
-                    // axis the impulse is parallel to the displacement's
-                    // lever and r × v is conserved (to rounding).
-                    // A body exactly at the pivot (and at rest) is pushed
-                    // along +Y, the geometry module's convention for
-                    // coincident points.
-                    let lever = offset + relative_velocity.scale(h).scale(lag);
-                    let axis = lever.try_normalize().unwrap_or(Vec2::Y);
-                    let stretch = length.sub(rest_length);
-                    let v = relative_velocity.dot(axis);
-                    (
-                        axis.scale(spring_impulse(stretch, v, w, stiffness, damping, h, theta)),
-                        Vec2::new(lag, lag),
-                    )
+                    let stretch = offset.length().sub(rest_length);
+                    // The axis is set once every slot's θ is known (below).
+                    let row = scratch.rows.len();
+                    scratch.push_row(
+                        ends,
+                        Some(Vec2::Y),
+                        Vec2::new(stretch, S::ZERO),
+                        (Vec2::new(stiffness, stiffness), damping),
+                        h,
+                    );
+                    scratch
+                        .pending_radial
+                        .push((row, offset, sb.velocity - sa.velocity));
                 }
                 Constraint::Rope { .. } => continue,
-            };
-            let context = &mut self.step_context;
-            for (state, sign_b) in [(sa, false), (sb, true)] {
-                if !state.inverse_mass.is_positive() {
-                    continue;
-                }
-                let dv = impulse.scale(state.inverse_mass);
-                let dv = if sign_b { dv } else { -dv };
-                let i = state.slot as usize;
-                context.velocities[i] += dv;
-                // Positions see only θ of the change: record the (1 − θ)
-                // share to subtract (h times it) from the displacement.
-                context.spring_dv[i] += dv.mul_elements(lag);
             }
         }
+        let context = &mut self.step_context;
+        context.spring_dv.clear();
+        context.spring_dv.resize(n + 1, Vec2::ZERO);
+        if !any {
+            self.step_context.springs = scratch;
+            return;
+        }
+        // A radial spring pushes along the pole where the θ-method
+        // evaluates its force: the relative position moves by
+        // h·(v + θ·Δv), so the pole is taken at r + (1−θ)·h·v (θ the
+        // mass-weighted blend of its two ends). An impulse along r itself
+        // would change r × v by (1−θ)·h·(v × v') every step, always with
+        // the same sign while the body orbits, so the swing would gain
+        // angular momentum and energy without bound; along this axis r × v
+        // is conserved (to rounding). A body exactly at the pivot (and at
+        // rest) is pushed along +Y, the geometry module's convention for
+        // coincident points.
+        for &(row_index, offset, relative_velocity) in &scratch.pending_radial {
+            let row = &mut scratch.rows[row_index];
+            let (w_a, w_b) = row.inverse_masses;
+            let (t_a, t_b) = (
+                scratch.body_theta[row.a as usize],
+                scratch.body_theta[row.b as usize],
+            );
+            // w_a + w_b > 0 (checked when the row was built).
+            let theta = t_a.mul(w_a).add(t_b.mul(w_b)).div(w_a.add(w_b));
+            let lever = offset + relative_velocity.scale(h).scale(S::ONE.sub(theta));
+            let axis = lever.try_normalize().unwrap_or(Vec2::Y);
+            row.axis = Some(axis);
+        }
+        for row in &mut scratch.rows {
+            let (t_a, t_b) = (
+                scratch.body_theta[row.a as usize],
+                scratch.body_theta[row.b as usize],
+            );
+            row.finish(t_a, t_b);
+        }
+        scratch.position_velocities.clear();
+        scratch
+            .position_velocities
+            .extend_from_slice(&context.velocities);
+        solve_spring_rows(&mut scratch.rows, &mut scratch.position_velocities);
+        // Velocities: v = v₀ + Δv with θ_b·Δv = p − v₀ (θ_b ∈ [½, 1], so
+        // the division is defined); positions follow p, so v − p is the
+        // share (1 − θ_b)·Δv they do not see.
+        // Bodies mostly share a few blends: the last inverse is reused.
+        let mut last_inverse = (S::ONE.half(), S::from_int(2));
+        for (i, &p) in scratch.position_velocities.iter().enumerate() {
+            let v0 = context.velocities[i];
+            if p == v0 {
+                continue;
+            }
+            let theta = scratch.body_theta[i];
+            if theta != last_inverse.0 {
+                last_inverse = (theta, S::ONE.div(theta));
+            }
+            let inverse_theta = last_inverse.1;
+            let v = v0 + (p - v0).scale(inverse_theta);
+            context.velocities[i] = v;
+            context.spring_dv[i] = v - p;
+        }
+        context.springs = scratch;
     }
 
     /// Rope rows for this substep: a rope is active when it is taut or can
