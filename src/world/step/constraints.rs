@@ -80,10 +80,7 @@ impl<S: Scalar> World<S> {
     pub(crate) fn apply_springs(&mut self, h: S) {
         let n = self.slots.len();
         let mut scratch = core::mem::take(&mut self.step_context.springs);
-        scratch.rows.clear();
-        scratch.pending_radial.clear();
-        scratch.body_theta.clear();
-        scratch.body_theta.resize(n + 1, S::ONE.half());
+        scratch.begin(n + 1);
         let mut any = false;
         for ci in 0..self.constraint_slots.len() {
             let Some(constraint) = self.constraint_slots[ci]
@@ -167,12 +164,13 @@ impl<S: Scalar> World<S> {
             let axis = lever.try_normalize().unwrap_or(Vec2::Y);
             row.axis = Some(axis);
         }
+        let mut last_inverse = None;
         for row in &mut scratch.rows {
             let (t_a, t_b) = (
                 scratch.body_theta[row.a as usize],
                 scratch.body_theta[row.b as usize],
             );
-            row.finish(t_a, t_b);
+            row.finish(t_a, t_b, &mut last_inverse);
         }
         scratch.position_velocities.clear();
         scratch
