@@ -11,6 +11,7 @@ pub(crate) mod restitution;
 pub(crate) mod row;
 pub(crate) mod row_groups;
 mod step_context;
+pub(crate) mod tree_plan;
 pub(crate) mod tree_solve;
 
 pub(crate) use step_context::StepContext;

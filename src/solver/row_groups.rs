@@ -8,7 +8,7 @@ use crate::dynamics::islands;
 use crate::math::Scalar;
 use crate::solver::block_solve::MAX_BLOCK;
 use crate::solver::row::ContactConstraint;
-use crate::solver::tree_solve::{TreePlanner, TreeRow, plan_tree};
+use crate::solver::tree_plan::{TreePlanner, TreeRow, plan_tree};
 
 /// How a sweep solves one group's normal impulses.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -42,6 +42,12 @@ pub(crate) struct RowGroups {
     row_group: Vec<u32>,
     /// Group number of each union-find root while grouping (working memory).
     root_group: Vec<u32>,
+    /// Per union-find root while grouping: whether its rows close a cycle
+    /// among dynamic bodies (working memory).
+    root_cyclic: Vec<bool>,
+    /// Per group: whether its dynamic bodies and rows contain a cycle (so
+    /// it cannot be a tree).
+    cyclic: Vec<bool>,
 }
 
 impl RowGroups {
@@ -56,10 +62,23 @@ impl RowGroups {
         parents: &mut Vec<u32>,
     ) {
         islands::reset(parents, slot_count);
-        // Join the two ends of every row that are both dynamic.
+        self.root_cyclic.clear();
+        self.root_cyclic.resize(slot_count, false);
+        // Join the two ends of every row that are both dynamic (the same
+        // union as `islands::union`, lower root kept). A row whose ends are
+        // already joined closes a cycle: its group cannot be a tree, which
+        // spares `classify` the search for one (a pyramid, a ball pit).
         for row in rows {
             if row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive() {
-                islands::union(parents, row.a, row.b);
+                let (ra, rb) = (islands::find(parents, row.a), islands::find(parents, row.b));
+                if ra == rb {
+                    self.root_cyclic[ra as usize] = true;
+                } else {
+                    let (keep, gone) = if ra < rb { (ra, rb) } else { (rb, ra) };
+                    parents[gone as usize] = keep;
+                    let cyclic = self.root_cyclic[gone as usize];
+                    self.root_cyclic[keep as usize] |= cyclic;
+                }
             }
         }
         // The group of a row is the root of its (first) dynamic end; groups
@@ -68,6 +87,7 @@ impl RowGroups {
         self.root_group.resize(slot_count, u32::MAX);
         self.row_group.clear();
         self.starts.clear();
+        self.cyclic.clear();
         for row in rows {
             let end = if row.inverse_mass_b.is_positive() {
                 row.b
@@ -83,6 +103,8 @@ impl RowGroups {
                         *slot = g;
                     }
                     self.starts.push(0);
+                    self.cyclic
+                        .push(self.root_cyclic.get(root).copied().unwrap_or(true));
                     g
                 }
             };
@@ -150,14 +172,16 @@ impl RowGroups {
     ) {
         self.modes.clear();
         self.plans.clear();
-        for w in self.starts.windows(2) {
+        for (w, &cyclic) in self.starts.windows(2).zip(&self.cyclic) {
             let group = &self.rows[w[0]..w[1]];
             let position = if group.len() < 2 {
                 GroupSolve::Sequential
             } else {
                 let wanted = always_direct || group.len() >= 3 || uneven_masses(rows, group);
                 let start = self.plans.len();
-                if wanted && plan_tree(rows, group, slot_count, &mut self.planner, &mut self.plans)
+                if wanted
+                    && !cyclic
+                    && plan_tree(rows, group, slot_count, &mut self.planner, &mut self.plans)
                 {
                     GroupSolve::Tree(start..self.plans.len())
                 } else if group.len() <= MAX_BLOCK && (always_direct || uneven_masses(rows, group))
@@ -254,6 +278,34 @@ mod tests {
             row(3, 4, 1, 1), // joins A and C: both become one group
         ];
         assert_eq!(grouped(&rows, 6), vec![vec![0, 2, 4], vec![1, 3]]);
+    }
+
+    #[test]
+    fn a_group_with_a_cycle_among_dynamic_bodies_is_marked_cyclic() {
+        let mut groups = RowGroups::default();
+        let mut parents = Vec::new();
+        // Group of bodies 1-2-3 closed into a triangle; group of 4-5 hung
+        // from fixed body 0 twice (rows to a fixed body close no cycle);
+        // two rows between 6 and 7 (two ropes on one pair) are a cycle.
+        let rows = [
+            row(1, 2, 1, 1),
+            row(0, 4, 0, 1),
+            row(2, 3, 1, 1),
+            row(0, 5, 0, 1),
+            row(6, 7, 1, 1),
+            row(3, 1, 1, 1),
+            row(4, 5, 1, 1),
+            row(6, 7, 1, 1),
+        ];
+        groups.regroup(&rows, 8, &mut parents);
+        assert_eq!(groups.iter().count(), 3);
+        assert_eq!(groups.cyclic, vec![true, false, true]);
+        groups.classify(&rows, 8, true);
+        let trees: Vec<bool> = groups
+            .iter_classified()
+            .map(|(_, _, p)| matches!(p, GroupSolve::Tree(_)))
+            .collect();
+        assert_eq!(trees, vec![false, true, false]);
     }
 
     #[test]

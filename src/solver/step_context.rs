@@ -42,6 +42,13 @@ pub(crate) struct StepContext<S: Scalar> {
     /// Each rope row's anchor offset (b − a) at the start of the substep and
     /// its length, for re-linearising in the position iterations.
     pub(crate) rope_geometry: Vec<(Vec2<S>, S)>,
+    /// Each rope row's sideways stiffness for the position passes
+    /// (`world::step::solve`).
+    pub(crate) rope_side_stiffness: Vec<S>,
+    /// Each rope row's sideways stiffness for the velocity iterations.
+    pub(crate) rope_velocity_side: Vec<S>,
+    /// The sideways impulse each rope row received this substep.
+    pub(crate) rope_side_impulse: Vec<S>,
     /// Rope rows grouped by shared bodies (chains), for the block solver.
     pub(crate) rope_groups: RowGroups,
     /// Contact rows grouped by shared bodies, for the block solver.

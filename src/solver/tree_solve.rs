@@ -49,6 +49,28 @@
 //! solve (its impulse is 0 here) and the caller treats it by sequential
 //! impulses.
 //!
+//! # Ropes: a sideways stiffness on the edge
+//!
+//! A rope row may carry a sideways stiffness `g` (set by the caller; 0 for
+//! contacts): the edge is then the hard row along `n` and a soft row along
+//! `s = perp(n)` with impulse `λ_s = −g·(s·Δv_rel)` (compliance `1/g`),
+//! the implicit form of the rope's geometric stiffness `T/ℓ·s sᵀ` (a rope
+//! under tension `T` resists turning; `world::step::solve` has the
+//! physics). Both rows join the same two bodies, so the edge is eliminated
+//! as one 2×2 block: with `R = [nᵀ; sᵀ]` and `K = K_p + K_g`,
+//!
+//! ```text
+//! D  = R K Rᵀ + diag(0, 1/g)
+//!    ⇒ D⁻¹ = [[1 + g·c, −g·b], [−g·b, g·a]] / (a(1 + g·c) − g·b²),
+//!       a = nᵀKn, b = nᵀKs, c = sᵀKs      (no 1/g: g may be tiny)
+//! μ⁰ = D⁻¹ e,   G = σ_p D⁻¹ Qᵀ,   Q = [K_p n, K_p s]
+//! u_p ← u_p + σ_p Q μ⁰,   K_p ← K_p − Q D⁻¹ Qᵀ,   μ = μ⁰ − G f_p.
+//! ```
+//!
+//! With `g = 0` this is the scalar row above. `D` is positive definite
+//! whenever `a > 0` (its determinant is `(a·c − b²) + a/g > 0`), so the
+//! same skip rule applies to `a` and to the determinant's numerator.
+//!
 //! Rounding: every quantity is a product of a few inverse masses and unit
 //! normals; `d` is bounded below by the skip rule (2⁻¹⁶ of the body's own
 //! inverse mass), so `λ⁰ = e/d` never amplifies the residual by more than
@@ -56,23 +78,7 @@
 
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::ContactConstraint;
-
-/// Marks a row whose other end is not a dynamic body of the group.
-pub(crate) const NO_CHILD: u32 = u32::MAX;
-
-/// One row of a tree plan, in elimination (leaves-first) order.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct TreeRow {
-    /// Index of the row in the row list.
-    pub(crate) row: usize,
-    /// Slot of the end nearer the root (always dynamic).
-    pub(crate) parent: u32,
-    /// Slot of the other end when it is a dynamic body of the group, else
-    /// [`NO_CHILD`].
-    pub(crate) child: u32,
-    /// Whether the parent is the row's `b` end (σ_p = +1).
-    pub(crate) parent_is_b: bool,
-}
+use crate::solver::tree_plan::{NO_CHILD, TreeRow};
 
 /// A symmetric 2×2 matrix.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -113,6 +119,14 @@ pub(crate) struct TreeScratch<S: Scalar> {
     free: Vec<S>,
     /// `a` per row.
     gain: Vec<Vec2<S>>,
+    /// The sideways part of `λ⁰` per row (edges with a sideways stiffness).
+    free_side: Vec<S>,
+    /// The sideways part of `a` per row.
+    gain_side: Vec<Vec2<S>>,
+    /// The sideways stiffness `g` per row (0: none); see [`solve_tree`].
+    pub(crate) side_stiffness: Vec<S>,
+    /// The solved sideways impulse per row.
+    pub(crate) side_value: Vec<S>,
     /// The residual `target − J v` per row on entry, the solved impulse
     /// per row on exit (0 for rows left out).
     pub(crate) value: Vec<S>,
@@ -123,6 +137,15 @@ pub(crate) struct TreeScratch<S: Scalar> {
 }
 
 impl<S: Scalar> TreeScratch<S> {
+    /// A body before any row is folded into it: mobility `w·I`, no drift,
+    /// no load.
+    fn reset_body(&mut self, slot: u32, inverse_mass: S) {
+        let k = slot as usize;
+        self.mobility[k] = Sym2::scalar(inverse_mass);
+        self.drift[k] = Vec2::ZERO;
+        self.load[k] = Vec2::ZERO;
+    }
+
     /// Sizes the per-slot and per-row arrays.
     pub(crate) fn reserve(&mut self, slots: usize, rows: usize) {
         if self.mobility.len() < slots {
@@ -133,6 +156,10 @@ impl<S: Scalar> TreeScratch<S> {
         if self.free.len() < rows {
             self.free.resize(rows, S::ZERO);
             self.gain.resize(rows, Vec2::ZERO);
+            self.free_side.resize(rows, S::ZERO);
+            self.gain_side.resize(rows, Vec2::ZERO);
+            self.side_stiffness.resize(rows, S::ZERO);
+            self.side_value.resize(rows, S::ZERO);
             self.value.resize(rows, S::ZERO);
             self.active.resize(rows, false);
         }
@@ -153,23 +180,14 @@ pub(crate) fn solve_tree<S: Scalar>(
     // Reset the bodies of the tree: each appears as a parent or a child.
     for t in plan {
         let r = &rows[t.row];
-        let w_parent = if t.parent_is_b {
-            r.inverse_mass_b
+        let (w_parent, w_child) = if t.parent_is_b {
+            (r.inverse_mass_b, r.inverse_mass_a)
         } else {
-            r.inverse_mass_a
+            (r.inverse_mass_a, r.inverse_mass_b)
         };
-        work.mobility[t.parent as usize] = Sym2::scalar(w_parent);
-        work.drift[t.parent as usize] = Vec2::ZERO;
-        work.load[t.parent as usize] = Vec2::ZERO;
+        work.reset_body(t.parent, w_parent);
         if t.child != NO_CHILD {
-            let w_child = if t.parent_is_b {
-                r.inverse_mass_a
-            } else {
-                r.inverse_mass_b
-            };
-            work.mobility[t.child as usize] = Sym2::scalar(w_child);
-            work.drift[t.child as usize] = Vec2::ZERO;
-            work.load[t.child as usize] = Vec2::ZERO;
+            work.reset_body(t.child, w_child);
         }
     }
     // Forward: fold each row into its parent, leaves first.
@@ -201,6 +219,8 @@ pub(crate) fn solve_tree<S: Scalar>(
             work.dependent.push(t.row);
             work.free[t.row] = S::ZERO;
             work.gain[t.row] = Vec2::ZERO;
+            work.free_side[t.row] = S::ZERO;
+            work.gain_side[t.row] = Vec2::ZERO;
             continue;
         }
         // Residual at the predicted velocities: the entry residual minus
@@ -210,19 +230,79 @@ pub(crate) fn solve_tree<S: Scalar>(
         } else {
             (child_drift(work, t), work.drift[p])
         };
-        let drift_along = (ub - ua).dot(n);
-        let residual = work.value[t.row].sub(drift_along);
-        let free = residual.div(d);
-        let signed_kn = if t.parent_is_b { kn } else { -kn };
+        let residual = work.value[t.row].sub((ub - ua).dot(n));
+        let g = work.side_stiffness[t.row];
+        if !g.is_positive() {
+            let free = residual.div(d);
+            let signed_kn = if t.parent_is_b { kn } else { -kn };
+            work.free[t.row] = free;
+            work.free_side[t.row] = S::ZERO;
+            work.gain[t.row] = Vec2::new(signed_kn.x.div(d), signed_kn.y.div(d));
+            work.gain_side[t.row] = Vec2::ZERO;
+            work.drift[p] += signed_kn.scale(free);
+            // K_p − (K_p n)(K_p n)ᵀ / d, with (K_p n)/d computed once.
+            let q = Vec2::new(kn.x.div(d), kn.y.div(d));
+            work.mobility[p] = Sym2 {
+                xx: k_p.xx.sub(kn.x.mul(q.x)),
+                xy: k_p.xy.sub(kn.x.mul(q.y)),
+                yy: k_p.yy.sub(kn.y.mul(q.y)),
+            };
+            continue;
+        }
+        // An edge with a sideways stiffness g along s = perp(n) (see
+        // `solve_tree`): rows (n, s), D = R K Rᵀ + diag(0, 1/g) with
+        // K = K_p + K_g, written without 1/g:
+        //   D⁻¹ = [[1 + g·c, −g·b], [−g·b, g·a]] / (a(1 + g·c) − g·b²),
+        //   a = nᵀKn, b = nᵀKs, c = sᵀKs.
+        let side = n.perp();
+        let k_sum = match t.child {
+            NO_CHILD => k_p,
+            child => {
+                let k_g = work.mobility[child as usize];
+                Sym2 {
+                    xx: k_p.xx.add(k_g.xx),
+                    xy: k_p.xy.add(k_g.xy),
+                    yy: k_p.yy.add(k_g.yy),
+                }
+            }
+        };
+        let (a, b, c) = (d, n.dot(k_sum.times(side)), side.dot(k_sum.times(side)));
+        let one_gc = S::ONE.add(g.mul(c));
+        let (gb, ga) = (g.mul(b), g.mul(a));
+        let den = a.mul(one_gc).sub(gb.mul(b));
+        if den <= floor {
+            work.dependent.push(t.row);
+            work.free[t.row] = S::ZERO;
+            work.gain[t.row] = Vec2::ZERO;
+            work.free_side[t.row] = S::ZERO;
+            work.gain_side[t.row] = Vec2::ZERO;
+            continue;
+        }
+        let residual_side = work.side_value[t.row].sub((ub - ua).dot(side));
+        // μ⁰ = D⁻¹ e.
+        let free = one_gc.mul(residual).sub(gb.mul(residual_side)).div(den);
+        let free_side = ga.mul(residual_side).sub(gb.mul(residual)).div(den);
+        let ks = k_p.times(side);
+        let sign = |v: Vec2<S>| if t.parent_is_b { v } else { -v };
+        // Gains G = σ D⁻¹ Qᵀ with Q = [K_p n, K_p s].
+        let gain_n = Vec2::new(
+            one_gc.mul(kn.x).sub(gb.mul(ks.x)).div(den),
+            one_gc.mul(kn.y).sub(gb.mul(ks.y)).div(den),
+        );
+        let gain_s = Vec2::new(
+            ga.mul(ks.x).sub(gb.mul(kn.x)).div(den),
+            ga.mul(ks.y).sub(gb.mul(kn.y)).div(den),
+        );
         work.free[t.row] = free;
-        work.gain[t.row] = Vec2::new(signed_kn.x.div(d), signed_kn.y.div(d));
-        work.drift[p] += signed_kn.scale(free);
-        // K_p − (K_p n)(K_p n)ᵀ / d, with (K_p n)/d computed once.
-        let q = Vec2::new(kn.x.div(d), kn.y.div(d));
+        work.free_side[t.row] = free_side;
+        work.gain[t.row] = sign(gain_n);
+        work.gain_side[t.row] = sign(gain_s);
+        work.drift[p] += sign(kn.scale(free) + ks.scale(free_side));
+        // K_p − Q D⁻¹ Qᵀ = K_p − kn·gain_nᵀ − ks·gain_sᵀ (symmetric).
         work.mobility[p] = Sym2 {
-            xx: k_p.xx.sub(kn.x.mul(q.x)),
-            xy: k_p.xy.sub(kn.x.mul(q.y)),
-            yy: k_p.yy.sub(kn.y.mul(q.y)),
+            xx: k_p.xx.sub(kn.x.mul(gain_n.x)).sub(ks.x.mul(gain_s.x)),
+            xy: k_p.xy.sub(kn.x.mul(gain_n.y)).sub(ks.x.mul(gain_s.y)),
+            yy: k_p.yy.sub(kn.y.mul(gain_n.y)).sub(ks.y.mul(gain_s.y)),
         };
     }
     // Back pass: the root feels nothing else; each row's impulse follows
@@ -233,8 +313,10 @@ pub(crate) fn solve_tree<S: Scalar>(
         }
         let p = t.parent as usize;
         let lambda = work.free[t.row].sub(work.gain[t.row].dot(work.load[p]));
+        let lambda_side = work.free_side[t.row].sub(work.gain_side[t.row].dot(work.load[p]));
         let n = rows[t.row].normal;
-        let push = n.scale(lambda);
+        let push = n.scale(lambda) + n.perp().scale(lambda_side);
+        work.side_value[t.row] = lambda_side;
         if t.parent_is_b {
             work.load[p] += push;
         } else {
@@ -247,6 +329,7 @@ pub(crate) fn solve_tree<S: Scalar>(
     }
     for &r in &work.dependent {
         work.value[r] = S::ZERO;
+        work.side_value[r] = S::ZERO;
     }
 }
 
@@ -259,125 +342,6 @@ fn child_drift<S: Scalar>(work: &TreeScratch<S>, t: &TreeRow) -> Vec2<S> {
     }
 }
 
-/// Working memory of [`plan_tree`] (adjacency lists and marks per slot).
-#[derive(Clone, Debug, Default)]
-pub(crate) struct TreePlanner {
-    /// First incidence of each slot (`2·position + end`), or `u32::MAX`.
-    head: Vec<u32>,
-    /// Next incidence of the same slot, per incidence.
-    next: Vec<u32>,
-    /// Whether each slot has been reached by the search.
-    seen: Vec<bool>,
-    /// Whether each row (by position in the group) has been placed.
-    placed: Vec<bool>,
-    /// Bodies in the order the search reached them.
-    queue: Vec<u32>,
-}
-
-const NONE: u32 = u32::MAX;
-
-/// The dynamic slot at end `end` (0 = a, 1 = b) of a row, if dynamic.
-fn dynamic_end<S: Scalar>(row: &ContactConstraint<S>, end: u32) -> Option<u32> {
-    if end == 0 {
-        row.inverse_mass_a.is_positive().then_some(row.a)
-    } else {
-        row.inverse_mass_b.is_positive().then_some(row.b)
-    }
-}
-
-/// Appends to `out` the elimination plan of `group` (leaves first) and
-/// returns true when the group's dynamic bodies and rows form a tree; on a
-/// cycle it returns false and leaves `out` as it was. Linear in the
-/// group's size: a breadth-first search from the first row's dynamic end
-/// builds the parent links, and the rows listed in the reverse of the
-/// search order have every child body's rows before the body's own parent
-/// row.
-pub(crate) fn plan_tree<S: Scalar>(
-    rows: &[ContactConstraint<S>],
-    group: &[usize],
-    slot_count: usize,
-    planner: &mut TreePlanner,
-    out: &mut Vec<TreeRow>,
-) -> bool {
-    if planner.head.len() < slot_count {
-        planner.head.resize(slot_count, NONE);
-        planner.seen.resize(slot_count, false);
-    }
-    planner.next.clear();
-    planner.next.resize(2 * group.len(), NONE);
-    planner.placed.clear();
-    planner.placed.resize(group.len(), false);
-    for (position, &ri) in group.iter().enumerate() {
-        for end in 0..2 {
-            if let Some(k) = dynamic_end(&rows[ri], end) {
-                let incidence = u32::try_from(2 * position).unwrap_or(NONE) + end;
-                planner.next[incidence as usize] = planner.head[k as usize];
-                planner.head[k as usize] = incidence;
-            }
-        }
-    }
-    let start = out.len();
-    planner.queue.clear();
-    let is_tree = 'search: {
-        let Some(&first) = group.first() else {
-            break 'search true;
-        };
-        let Some(root) = dynamic_end(&rows[first], 1).or(dynamic_end(&rows[first], 0)) else {
-            break 'search false;
-        };
-        planner.seen[root as usize] = true;
-        planner.queue.push(root);
-        let mut cursor = 0;
-        while let Some(&body) = planner.queue.get(cursor) {
-            cursor += 1;
-            let mut incidence = planner.head[body as usize];
-            while incidence != NONE {
-                let position = (incidence / 2) as usize;
-                let end = incidence % 2;
-                incidence = planner.next[incidence as usize];
-                if planner.placed[position] {
-                    continue;
-                }
-                planner.placed[position] = true;
-                let ri = group[position];
-                let child = match dynamic_end(&rows[ri], 1 - end) {
-                    Some(g) if planner.seen[g as usize] => break 'search false,
-                    Some(g) => {
-                        planner.seen[g as usize] = true;
-                        planner.queue.push(g);
-                        g
-                    }
-                    None => NO_CHILD,
-                };
-                out.push(TreeRow {
-                    row: ri,
-                    parent: body,
-                    child,
-                    parent_is_b: end == 1,
-                });
-            }
-        }
-        // Every row is reached from the root when the group is connected
-        // (groups are built that way); anything left means it is not.
-        planner.placed.iter().all(|&p| p)
-    };
-    // Clear the per-slot marks of this group only.
-    for &ri in group {
-        for end in 0..2 {
-            if let Some(k) = dynamic_end(&rows[ri], end) {
-                planner.head[k as usize] = NONE;
-                planner.seen[k as usize] = false;
-            }
-        }
-    }
-    if is_tree {
-        out[start..].reverse();
-    } else {
-        out.truncate(start);
-    }
-    is_tree
-}
-
 /// Applies impulse `amount` of row `row` to `target` (velocities or
 /// displacements).
 fn apply<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Vec2<S>]) {
@@ -386,6 +350,28 @@ fn apply<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Vec2<S>
     }
     if row.inverse_mass_b.is_positive() {
         target[row.b as usize] += row.push_b.scale(amount);
+    }
+}
+
+/// The sideways stiffness of rope rows in a velocity solve and the
+/// sideways impulse each has received this substep (see
+/// `world::step::solve`).
+pub(crate) struct SideRows<'a, S: Scalar> {
+    /// `g` per row (0: none).
+    pub(crate) stiffness: &'a [S],
+    /// The accumulated sideways impulse per row.
+    pub(crate) accumulated: &'a mut [S],
+}
+
+/// Applies sideways impulse `amount` of row `row` (along `perp(n)`) to
+/// `target`.
+fn apply_side<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Vec2<S>]) {
+    let side = row.normal.perp();
+    if row.inverse_mass_a.is_positive() {
+        target[row.a as usize] -= side.scale(row.inverse_mass_a.mul(amount));
+    }
+    if row.inverse_mass_b.is_positive() {
+        target[row.b as usize] += side.scale(row.inverse_mass_b.mul(amount));
     }
 }
 
@@ -405,6 +391,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     plan: &[TreeRow],
     velocities: &mut [Vec2<S>],
     slop: S,
+    side: Option<SideRows<'_, S>>,
     work: &mut TreeScratch<S>,
 ) {
     let shortfall = |row: &ContactConstraint<S>, v: &[Vec2<S>]| {
@@ -427,14 +414,33 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     // released by the first round (its impulse would pull).
     for &ri in group {
         let row = &rows[ri];
+        work.side_stiffness[ri] = side
+            .as_ref()
+            .and_then(|sr| sr.stiffness.get(ri).copied())
+            .unwrap_or(S::ZERO);
+        work.side_value[ri] = S::ZERO;
         work.active[ri] = row.normal_impulse.is_positive()
             || row.separation <= slop
             || !shortfall(row, velocities).is_negative();
     }
+    let mut side = side;
     for _ in 0..ROUNDS {
         for &ri in group {
             if work.active[ri] {
                 work.value[ri] = shortfall(&rows[ri], velocities);
+                let g = work.side_stiffness[ri];
+                if let Some(sr) = side.as_ref()
+                    && g.is_positive()
+                {
+                    // λ_s = −g·(s·v_rel) at the end: residual
+                    // −s·v_rel − (impulse so far)/g.
+                    let row = &rows[ri];
+                    let v_rel = velocities[row.b as usize] - velocities[row.a as usize];
+                    work.side_value[ri] = v_rel
+                        .dot(row.normal.perp())
+                        .add(sr.accumulated[ri].div(g))
+                        .neg();
+                }
             }
         }
         solve_tree(rows, plan, work);
@@ -457,6 +463,13 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
                 let x = work.value[ri];
                 rows[ri].normal_impulse = rows[ri].normal_impulse.add(x);
                 apply(&rows[ri], x, velocities);
+                if let Some(sr) = side.as_mut()
+                    && work.side_stiffness[ri].is_positive()
+                {
+                    let y = work.side_value[ri];
+                    sr.accumulated[ri] = sr.accumulated[ri].add(y);
+                    apply_side(&rows[ri], y, velocities);
+                }
             }
         }
         // Rows left out that the solution now violates join the next round.
@@ -500,6 +513,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     slop: S,
     beta: S,
     max_correction: S,
+    side_stiffness: &[S],
     work: &mut TreeScratch<S>,
 ) {
     // The correction each row asks for (≤ 0), from the current separation.
@@ -527,6 +541,8 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
             .add((displacements[row.b as usize] - displacements[row.a as usize]).dot(row.normal));
         work.active[ri] = c.is_negative() || separation <= slop;
         work.value[ri] = c.neg();
+        work.side_stiffness[ri] = side_stiffness.get(ri).copied().unwrap_or(S::ZERO);
+        work.side_value[ri] = S::ZERO;
     }
     if !any {
         return;
@@ -544,6 +560,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
             for &ri in group {
                 if work.active[ri] {
                     apply(&rows[ri], work.value[ri], displacements);
+                    apply_side(&rows[ri], work.side_value[ri], displacements);
                 }
             }
             return;
@@ -552,6 +569,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
         for &ri in group {
             if work.active[ri] {
                 work.value[ri] = correction(&rows[ri], displacements).neg();
+                work.side_value[ri] = S::ZERO;
             }
         }
     }

@@ -8,12 +8,8 @@
 use crate::constraints::spring_solve::solve_spring_rows;
 use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
-use crate::solver::block_solve::BlockScratch;
 use crate::solver::row::{ContactConstraint, effective_mass};
-use crate::solver::row_groups::RowGroups;
-use crate::solver::tree_solve::TreeScratch;
 use crate::world::World;
-use crate::world::WorldSettings;
 
 /// Where an anchor is this substep, how it moves, and which solver slot
 /// carries its velocity.
@@ -312,20 +308,4 @@ pub(crate) fn relinearise_rope_rows<S: Scalar>(
         row.push_b = row.normal.scale(row.inverse_mass_b);
         row.separation = max_length.sub(length).sub(moved.dot(row.normal));
     }
-}
-
-/// One position pass over the rope rows alone, re-linearised at the
-/// current displacements (chains by the block solver, like the position
-/// iterations); with `settings.position_correction` = 1 it removes each
-/// rope's stretch beyond the slop, at most `max_correction` per row.
-pub(crate) fn restore_rope_lengths<S: Scalar>(
-    rows: &mut [ContactConstraint<S>],
-    groups: &RowGroups,
-    geometry: &[(Vec2<S>, S)],
-    displacements: &mut [Vec2<S>],
-    settings: &WorldSettings<S>,
-    work: &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
-) {
-    relinearise_rope_rows(rows, geometry, displacements);
-    super::solve::solve_group_list_positions(rows, groups, displacements, settings, work);
 }

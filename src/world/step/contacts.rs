@@ -8,7 +8,7 @@
 //! [`World::bound_corrections`] → [`World::project_out_of_immovable`] →
 //! [`World::bounce`] → [`World::sweep_rebounds`] → write back.
 
-use super::constraints::restore_rope_lengths;
+use super::solve::{RopePass, rope_position_pass};
 use crate::collision::{contact_between, shape_toi};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
@@ -170,16 +170,20 @@ impl<S: Scalar> World<S> {
                 rope_rows,
                 rope_groups,
                 rope_geometry,
+                rope_side_stiffness,
                 constraints,
                 displacements,
                 rope_block,
                 tree,
                 ..
             } = &mut self.step_context;
-            restore_rope_lengths(
-                rope_rows,
-                rope_groups,
-                rope_geometry,
+            rope_position_pass(
+                RopePass {
+                    rows: rope_rows,
+                    groups: rope_groups,
+                    geometry: rope_geometry,
+                    side_stiffness: rope_side_stiffness,
+                },
                 displacements,
                 &settings,
                 &mut (rope_block, tree),

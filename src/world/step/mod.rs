@@ -99,10 +99,10 @@ impl<S: Scalar> World<S> {
         }
         self.build_rope_rows(h, inverse_h);
         self.group_and_warm_start();
-        self.solve_velocities();
+        self.solve_velocities(h);
         self.integrate(h);
         self.remember_displacements();
-        self.solve_positions();
+        self.solve_positions(h);
         self.bound_corrections(h);
         self.project_out_of_immovable();
         self.bounce(h);

@@ -11,7 +11,9 @@ use crate::solver::row::{
     ContactConstraint, solve_friction_row, solve_position_row, solve_velocity_row, warm_start,
 };
 use crate::solver::row_groups::{GroupSolve, RowGroups};
-use crate::solver::tree_solve::{TreeScratch, solve_tree_positions, solve_tree_velocities};
+use crate::solver::tree_solve::{
+    SideRows, TreeScratch, solve_tree_positions, solve_tree_velocities,
+};
 use crate::world::World;
 use crate::world::WorldSettings;
 
@@ -39,13 +41,27 @@ impl<S: Scalar> World<S> {
         warm_start(&context.constraints, &mut context.velocities);
     }
 
-    /// Velocity iterations over rope rows, then contact rows.
-    pub(super) fn solve_velocities(&mut self) {
+    /// Velocity iterations over rope rows (with their sideways stiffness,
+    /// [`rope_velocity_side_stiffness`]), then contact rows.
+    pub(super) fn solve_velocities(&mut self, h: S) {
         let context = &mut self.step_context;
+        rope_velocity_side_stiffness(
+            &context.rope_rows,
+            &context.rope_geometry,
+            h,
+            &mut context.rope_velocity_side,
+        );
+        context.rope_side_impulse.clear();
+        context
+            .rope_side_impulse
+            .resize(context.rope_rows.len(), S::ZERO);
+        let slop = self.settings.linear_slop;
         for _ in 0..self.settings.velocity_iterations {
             let StepContext {
                 rope_rows,
                 rope_groups,
+                rope_velocity_side,
+                rope_side_impulse,
                 constraints,
                 contact_groups,
                 velocities,
@@ -53,29 +69,50 @@ impl<S: Scalar> World<S> {
                 tree,
                 ..
             } = context;
-            let slop = self.settings.linear_slop;
-            solve_group_list_velocities(rope_rows, rope_groups, velocities, slop, rope_block, tree);
+            let side = SideRows {
+                stiffness: rope_velocity_side,
+                accumulated: rope_side_impulse,
+            };
+            solve_group_list_velocities(
+                rope_rows,
+                rope_groups,
+                velocities,
+                slop,
+                Some(side),
+                rope_block,
+                tree,
+            );
             solve_group_list_velocities(
                 constraints,
                 contact_groups,
                 velocities,
                 slop,
+                None,
                 rope_block,
                 tree,
             );
         }
     }
 
-    /// Position iterations (ropes re-linearised each time), moving
-    /// displacements only, so correcting penetration adds no energy.
-    pub(super) fn solve_positions(&mut self) {
+    /// Position iterations: each one a pass over the ropes
+    /// ([`rope_position_pass`]: re-linearised, with their sideways
+    /// stiffness), then a pass over the contacts; both move displacements
+    /// only, so correcting penetration or stretch adds no energy.
+    pub(super) fn solve_positions(&mut self, h: S) {
         let settings = &self.settings;
         let context = &mut self.step_context;
+        rope_side_stiffness(
+            &context.rope_rows,
+            &context.rope_geometry,
+            h,
+            &mut context.rope_side_stiffness,
+        );
         for _ in 0..settings.position_iterations {
             let StepContext {
                 rope_rows,
                 rope_groups,
                 rope_geometry,
+                rope_side_stiffness,
                 constraints,
                 contact_groups,
                 displacements,
@@ -83,18 +120,129 @@ impl<S: Scalar> World<S> {
                 tree,
                 ..
             } = context;
-            relinearise_rope_rows(rope_rows, rope_geometry, displacements);
             let mut work = (rope_block, tree);
-            solve_group_list_positions(rope_rows, rope_groups, displacements, settings, &mut work);
+            rope_position_pass(
+                RopePass {
+                    rows: rope_rows,
+                    groups: rope_groups,
+                    geometry: rope_geometry,
+                    side_stiffness: rope_side_stiffness,
+                },
+                displacements,
+                settings,
+                &mut work,
+            );
             solve_group_list_positions(
                 constraints,
                 contact_groups,
                 displacements,
                 settings,
+                &[],
                 &mut work,
             );
         }
     }
+}
+
+/// Each rope row's sideways stiffness for the position passes,
+/// `g = λ·h/ℓ` (`λ` the row's impulse from the velocity solve, `ℓ` the
+/// rope's length), into `out`.
+///
+/// Why: the position pass is a Newton step of the projection onto the
+/// ropes' lengths, `min ½|Δx|²_M` subject to `C(x) = 0`. Its exact matrix
+/// is `M + Σ μ_r ∇²C_r`, where `μ_r ≈ T_r·h² = λ_r·h` is the rope's
+/// multiplier and `∇²C_r = s sᵀ/ℓ` (`s ⊥` the rope) couples its two ends
+/// sideways: a rope under tension resists turning. Gauss–Newton drops that
+/// term; it is small against a body's mass when `T·h²/(m·ℓ) = (ω·h)²/2`
+/// is small (`ω` the frequency at which a link swings sideways between
+/// two taut ropes), but a light link under a heavy end's tension has
+/// `(ω·h)²/2` of 10–100, and without the term the step moves it sideways
+/// by `e/θ` (stretch `e`, kink angle `θ`) where `(e/θ)²/ℓ` is far beyond
+/// `e`: the passes overshoot and the chain stretches from one tick to the
+/// next. With it, the tree solve treats each rope as a hard row along its
+/// direction and a spring of stiffness `g` across it
+/// ([`crate::solver::tree_solve`]), and the passes converge.
+fn rope_side_stiffness<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    geometry: &[(Vec2<S>, S)],
+    h: S,
+    out: &mut Vec<S>,
+) {
+    out.clear();
+    out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
+        if row.normal_impulse.is_positive() && length.is_positive() {
+            row.normal_impulse.mul(h).div(length)
+        } else {
+            S::ZERO
+        }
+    }));
+}
+
+/// Each rope row's sideways stiffness for the velocity iterations, into
+/// `out`: `g·φ(q)` with `g = λ·h/ℓ` as in [`rope_side_stiffness`] (`λ`
+/// the warm-start impulse, last substep's tension times `h`),
+/// `q = g·(w_a + w_b)` (≈ `(ω·h)²/2` of the ends' sideways swing) and
+/// `φ(q) = min(1, q²/16)`.
+///
+/// Why: the velocity iterations hold each rope along its direction at the
+/// start of the substep, i.e. they treat the turning of the rope's tension
+/// explicitly; for a light link between two taut ropes that is stable
+/// only while `ω·h < 2`, and a heavy end (100×, 1000×) puts light links
+/// far beyond it. The sideways row `λ_s = −g·(s·v_rel)` at the substep's
+/// end velocities is that turning taken implicitly (backward Euler on
+/// the geometric stiffness `T/ℓ·s sᵀ`), stable at any `ω·h`. Backward
+/// Euler also damps: `φ` keeps it off where the step resolves the swing
+/// (`φ < 4·10⁻⁶` for a 1-unit pendulum at 60 Hz, `q ≈ 0.003`) and full
+/// where it cannot (`q ≥ 4`).
+fn rope_velocity_side_stiffness<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    geometry: &[(Vec2<S>, S)],
+    h: S,
+    out: &mut Vec<S>,
+) {
+    out.clear();
+    out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
+        if !(row.normal_impulse.is_positive() && length.is_positive()) {
+            return S::ZERO;
+        }
+        let g = row.normal_impulse.mul(h).div(length);
+        let q = g
+            .mul(row.inverse_mass_a.add(row.inverse_mass_b))
+            .min(S::from_int(4));
+        let phi = q.mul(q).mul(S::from_ratio(1, 16)).min(S::ONE);
+        g.mul(phi)
+    }));
+}
+
+/// The rope rows of a substep, as [`rope_position_pass`] reads them.
+pub(super) struct RopePass<'a, S: Scalar> {
+    pub(super) rows: &'a mut [ContactConstraint<S>],
+    pub(super) groups: &'a RowGroups,
+    /// Each row's anchor offset at the start of the substep and length.
+    pub(super) geometry: &'a [(Vec2<S>, S)],
+    /// Each row's sideways stiffness ([`rope_side_stiffness`]).
+    pub(super) side_stiffness: &'a [S],
+}
+
+/// One position pass over the rope rows: re-linearised at the current
+/// displacements (so the pass sees each rope's true length and direction:
+/// a Newton step of the projection onto the ropes' lengths), then solved
+/// like the position iterations solve contacts, with each rope's sideways
+/// stiffness ([`rope_side_stiffness`]) in the tree solve.
+pub(super) fn rope_position_pass<S: Scalar>(
+    ropes: RopePass<'_, S>,
+    displacements: &mut [Vec2<S>],
+    settings: &WorldSettings<S>,
+    work: &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
+) {
+    let RopePass {
+        rows,
+        groups,
+        geometry,
+        side_stiffness,
+    } = ropes;
+    relinearise_rope_rows(rows, geometry, displacements);
+    solve_group_list_positions(rows, groups, displacements, settings, side_stiffness, work);
 }
 
 /// One velocity pass over grouped rows (ropes or contacts), each group the
@@ -106,6 +254,7 @@ fn solve_group_list_velocities<S: Scalar>(
     groups: &RowGroups,
     velocities: &mut [Vec2<S>],
     slop: S,
+    mut side: Option<SideRows<'_, S>>,
     block: &mut BlockScratch<S>,
     tree: &mut TreeScratch<S>,
 ) {
@@ -119,7 +268,19 @@ fn solve_group_list_velocities<S: Scalar>(
             }
             GroupSolve::Block => solve_group_velocities(rows, group, velocities, block),
             GroupSolve::Tree(range) => {
-                solve_tree_velocities(rows, group, groups.plan(range), velocities, slop, tree);
+                let side = side.as_mut().map(|sr| SideRows {
+                    stiffness: sr.stiffness,
+                    accumulated: &mut *sr.accumulated,
+                });
+                solve_tree_velocities(
+                    rows,
+                    group,
+                    groups.plan(range),
+                    velocities,
+                    slop,
+                    side,
+                    tree,
+                );
             }
         }
         for &ri in group {
@@ -129,11 +290,12 @@ fn solve_group_list_velocities<S: Scalar>(
 }
 
 /// One position pass over grouped rows (same split as the velocities).
-pub(super) fn solve_group_list_positions<S: Scalar>(
+fn solve_group_list_positions<S: Scalar>(
     rows: &[ContactConstraint<S>],
     groups: &RowGroups,
     displacements: &mut [Vec2<S>],
     settings: &WorldSettings<S>,
+    side_stiffness: &[S],
     (block, tree): &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
 ) {
     let (slop, beta, max) = (
@@ -159,6 +321,7 @@ pub(super) fn solve_group_list_positions<S: Scalar>(
                 slop,
                 beta,
                 max,
+                side_stiffness,
                 tree,
             ),
         }
