@@ -46,7 +46,7 @@
 //! solves the system above by Gauss–Seidel sweeps from λ = 0
 //! (`spring_solve.rs`): in the symmetrised form `(h²·K·Θ_s)⁻¹ + G·Θ_b·M⁻¹·Gᵀ`
 //! (positive definite) the sweeps converge, and they stop when a sweep's
-//! largest change is ≤ 2⁻¹⁰ of the largest impulse, or after 8 sweeps. A
+//! largest change is ≤ 2⁻⁸ of the largest impulse, or after 8 sweeps. A
 //! single spring, or springs that share no body, are exact in the first.
 //! The remaining residual `r` adds `Σ_s r_s·Δx_s/h` to ΔE; measured on
 //! lattices, chains, uneven masses and ω·h from 0.1 to 10
