@@ -313,10 +313,17 @@ pub(crate) fn solve_tree<S: Scalar>(
         }
         let p = t.parent as usize;
         let lambda = work.free[t.row].sub(work.gain[t.row].dot(work.load[p]));
-        let lambda_side = work.free_side[t.row].sub(work.gain_side[t.row].dot(work.load[p]));
         let n = rows[t.row].normal;
-        let push = n.scale(lambda) + n.perp().scale(lambda_side);
-        work.side_value[t.row] = lambda_side;
+        // A row without a sideways stiffness has no sideways impulse
+        // (its free part and gain are zero): skip the products.
+        let push = if work.side_stiffness[t.row].is_positive() {
+            let lambda_side = work.free_side[t.row].sub(work.gain_side[t.row].dot(work.load[p]));
+            work.side_value[t.row] = lambda_side;
+            n.scale(lambda) + n.perp().scale(lambda_side)
+        } else {
+            work.side_value[t.row] = S::ZERO;
+            n.scale(lambda)
+        };
         if t.parent_is_b {
             work.load[p] += push;
         } else {
@@ -366,6 +373,9 @@ pub(crate) struct SideRows<'a, S: Scalar> {
 /// Applies sideways impulse `amount` of row `row` (along `perp(n)`) to
 /// `target`.
 fn apply_side<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Vec2<S>]) {
+    if amount == S::ZERO {
+        return;
+    }
     let side = row.normal.perp();
     if row.inverse_mass_a.is_positive() {
         target[row.a as usize] -= side.scale(row.inverse_mass_a.mul(amount));

@@ -170,12 +170,29 @@ fn rope_side_stiffness<S: Scalar>(
 ) {
     out.clear();
     out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
-        if row.normal_impulse.is_positive() && length.is_positive() {
-            row.normal_impulse.mul(h).div(length)
-        } else {
-            S::ZERO
+        match side_stiffness(row, length, h) {
+            Some((g, _)) => g,
+            None => S::ZERO,
         }
     }));
+}
+
+/// A rope row's sideways stiffness `g = λ·h/ℓ` and `q = g·(w_a + w_b)`
+/// (≈ `(ω·h)²/2` of its ends' sideways swing), or `None` when the row
+/// carries no tension or `q < 1/4`.
+///
+/// Below `q = 1/4` the term `μ∇²C` is under an eighth of the mass term:
+/// Gauss–Newton converges without it and the velocity iterations resolve
+/// the swing (`φ(q) < 1/256`), so the row keeps the cheaper scalar
+/// elimination (ordinary pendulums and chains of equal links: a 20-link
+/// chain of equal links has `q ≈ 0.44` at its top rope only).
+fn side_stiffness<S: Scalar>(row: &ContactConstraint<S>, length: S, h: S) -> Option<(S, S)> {
+    if !(row.normal_impulse.is_positive() && length.is_positive()) {
+        return None;
+    }
+    let g = row.normal_impulse.mul(h).div(length);
+    let q = g.mul(row.inverse_mass_a.add(row.inverse_mass_b));
+    (q >= S::from_ratio(1, 4)).then_some((g, q))
 }
 
 /// Each rope row's sideways stiffness for the velocity iterations, into
@@ -191,9 +208,9 @@ fn rope_side_stiffness<S: Scalar>(
 /// far beyond it. The sideways row `λ_s = −g·(s·v_rel)` at the substep's
 /// end velocities is that turning taken implicitly (backward Euler on
 /// the geometric stiffness `T/ℓ·s sᵀ`), stable at any `ω·h`. Backward
-/// Euler also damps: `φ` keeps it off where the step resolves the swing
-/// (`φ < 4·10⁻⁶` for a 1-unit pendulum at 60 Hz, `q ≈ 0.003`) and full
-/// where it cannot (`q ≥ 4`).
+/// Euler also damps: `φ` keeps it small where the step resolves the
+/// swing and full where it cannot (`q ≥ 4`); below `q = 1/4` it is off
+/// ([`side_stiffness`]; a 1-unit pendulum at 60 Hz has `q ≈ 0.003`).
 fn rope_velocity_side_stiffness<S: Scalar>(
     rows: &[ContactConstraint<S>],
     geometry: &[(Vec2<S>, S)],
@@ -202,13 +219,10 @@ fn rope_velocity_side_stiffness<S: Scalar>(
 ) {
     out.clear();
     out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
-        if !(row.normal_impulse.is_positive() && length.is_positive()) {
+        let Some((g, q)) = side_stiffness(row, length, h) else {
             return S::ZERO;
-        }
-        let g = row.normal_impulse.mul(h).div(length);
-        let q = g
-            .mul(row.inverse_mass_a.add(row.inverse_mass_b))
-            .min(S::from_int(4));
+        };
+        let q = q.min(S::from_int(4));
         let phi = q.mul(q).mul(S::from_ratio(1, 16)).min(S::ONE);
         g.mul(phi)
     }));
