@@ -8,7 +8,7 @@
 //! [`World::bound_corrections`] → [`World::project_out_of_immovable`] →
 //! [`World::bounce`] → [`World::sweep_rebounds`] → write back.
 
-use super::solve::{RopePass, rope_position_pass};
+use super::solve::rope_position_pass;
 use crate::collision::{contact_between, shape_toi};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
@@ -166,28 +166,12 @@ impl<S: Scalar> World<S> {
         };
         let slop = self.settings.linear_slop;
         for _ in 0..ROPE_SETTLE_PASSES {
+            rope_position_pass(&mut self.step_context, &settings);
             let StepContext {
-                rope_rows,
-                rope_groups,
-                rope_geometry,
-                rope_side_stiffness,
                 constraints,
                 displacements,
-                rope_block,
-                tree,
                 ..
             } = &mut self.step_context;
-            rope_position_pass(
-                RopePass {
-                    rows: rope_rows,
-                    groups: rope_groups,
-                    geometry: rope_geometry,
-                    side_stiffness: rope_side_stiffness,
-                },
-                displacements,
-                &settings,
-                &mut (rope_block, tree),
-            );
             project_rows_out_of_immovable(constraints, displacements, slop);
         }
     }

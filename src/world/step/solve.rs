@@ -108,11 +108,8 @@ impl<S: Scalar> World<S> {
             &mut context.rope_side_stiffness,
         );
         for _ in 0..settings.position_iterations {
+            rope_position_pass(context, settings);
             let StepContext {
-                rope_rows,
-                rope_groups,
-                rope_geometry,
-                rope_side_stiffness,
                 constraints,
                 contact_groups,
                 displacements,
@@ -120,25 +117,13 @@ impl<S: Scalar> World<S> {
                 tree,
                 ..
             } = context;
-            let mut work = (rope_block, tree);
-            rope_position_pass(
-                RopePass {
-                    rows: rope_rows,
-                    groups: rope_groups,
-                    geometry: rope_geometry,
-                    side_stiffness: rope_side_stiffness,
-                },
-                displacements,
-                settings,
-                &mut work,
-            );
             solve_group_list_positions(
                 constraints,
                 contact_groups,
                 displacements,
                 settings,
                 &[],
-                &mut work,
+                &mut (rope_block, tree),
             );
         }
     }
@@ -168,13 +153,7 @@ fn rope_side_stiffness<S: Scalar>(
     h: S,
     out: &mut Vec<S>,
 ) {
-    out.clear();
-    out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
-        match side_stiffness(row, length, h) {
-            Some((g, _)) => g,
-            None => S::ZERO,
-        }
-    }));
+    fill_side_stiffness(rows, geometry, h, out, |g, _| g);
 }
 
 /// A rope row's sideways stiffness `g = λ·h/ℓ` and `q = g·(w_a + w_b)`
@@ -217,25 +196,26 @@ fn rope_velocity_side_stiffness<S: Scalar>(
     h: S,
     out: &mut Vec<S>,
 ) {
-    out.clear();
-    out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
-        let Some((g, q)) = side_stiffness(row, length, h) else {
-            return S::ZERO;
-        };
+    fill_side_stiffness(rows, geometry, h, out, |g, q| {
         let q = q.min(S::from_int(4));
         let phi = q.mul(q).mul(S::from_ratio(1, 16)).min(S::ONE);
         g.mul(phi)
-    }));
+    });
 }
 
-/// The rope rows of a substep, as [`rope_position_pass`] reads them.
-pub(super) struct RopePass<'a, S: Scalar> {
-    pub(super) rows: &'a mut [ContactConstraint<S>],
-    pub(super) groups: &'a RowGroups,
-    /// Each row's anchor offset at the start of the substep and length.
-    pub(super) geometry: &'a [(Vec2<S>, S)],
-    /// Each row's sideways stiffness ([`rope_side_stiffness`]).
-    pub(super) side_stiffness: &'a [S],
+/// Writes one stiffness per rope row into `out`: `stiffness(g, q)` of the
+/// row's [`side_stiffness`], or zero where it has none.
+fn fill_side_stiffness<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    geometry: &[(Vec2<S>, S)],
+    h: S,
+    out: &mut Vec<S>,
+    stiffness: impl Fn(S, S) -> S,
+) {
+    out.clear();
+    out.extend(rows.iter().zip(geometry).map(|(row, &(_, length))| {
+        side_stiffness(row, length, h).map_or(S::ZERO, |(g, q)| stiffness(g, q))
+    }));
 }
 
 /// One position pass over the rope rows: re-linearised at the current
@@ -243,20 +223,33 @@ pub(super) struct RopePass<'a, S: Scalar> {
 /// a Newton step of the projection onto the ropes' lengths), then solved
 /// like the position iterations solve contacts, with each rope's sideways
 /// stiffness ([`rope_side_stiffness`]) in the tree solve.
+///
+/// Reads the context's rope rows, groups, geometry (each row's anchor
+/// offset at the start of the substep and length) and sideways stiffness,
+/// and moves its displacements.
 pub(super) fn rope_position_pass<S: Scalar>(
-    ropes: RopePass<'_, S>,
-    displacements: &mut [Vec2<S>],
+    context: &mut StepContext<S>,
     settings: &WorldSettings<S>,
-    work: &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
 ) {
-    let RopePass {
-        rows,
-        groups,
-        geometry,
-        side_stiffness,
-    } = ropes;
-    relinearise_rope_rows(rows, geometry, displacements);
-    solve_group_list_positions(rows, groups, displacements, settings, side_stiffness, work);
+    let StepContext {
+        rope_rows,
+        rope_groups,
+        rope_geometry,
+        rope_side_stiffness,
+        displacements,
+        rope_block,
+        tree,
+        ..
+    } = context;
+    relinearise_rope_rows(rope_rows, rope_geometry, displacements);
+    solve_group_list_positions(
+        rope_rows,
+        rope_groups,
+        displacements,
+        settings,
+        rope_side_stiffness,
+        &mut (rope_block, tree),
+    );
 }
 
 /// One velocity pass over grouped rows (ropes or contacts), each group the
