@@ -7,6 +7,7 @@ use crate::collision::{BroadPhase, Proxy};
 use crate::constraints::spring_solve::SpringScratch;
 use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::BlockScratch;
+use crate::solver::rebound_partners::ReboundPartners;
 use crate::solver::row::ContactConstraint;
 use crate::solver::row_groups::RowGroups;
 use crate::solver::tree_solve::TreeScratch;
@@ -71,9 +72,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// Slots whose displacement a bounce grew, with the displacement
     /// before it (the start of the rebound motion).
     pub(crate) rebounds: Vec<(u32, Vec2<S>)>,
-    /// `(slot, partner)` for every broad-phase partner of a rebounding
-    /// slot, sorted.
-    pub(crate) rebound_partners: Vec<(u32, u32)>,
+    /// The broad-phase partners of each rebounding slot.
+    pub(crate) rebound_partners: ReboundPartners,
     /// Displacements before the position pass (to bound its corrections).
     pub(crate) displacements_before_correction: Vec<Vec2<S>>,
 }

@@ -13,6 +13,7 @@ use crate::collision::{contact_between, shape_toi};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
+use crate::solver::rebound_partners::collect_rebound_partners;
 use crate::solver::restitution::apply_bounces;
 use crate::solver::row::ContactConstraint;
 use crate::world::{World, WorldSettings};
@@ -199,36 +200,26 @@ impl<S: Scalar> World<S> {
         // displacement is the start of its rebound).
         context.rebounds.sort_by_key(|r| r.0);
         context.rebounds.dedup_by_key(|r| r.0);
-        let rebounding =
-            |slot: u32, list: &[(u32, Vec2<S>)]| list.binary_search_by_key(&slot, |r| r.0).is_ok();
-        context.rebound_partners.clear();
-        for &(a, b) in &context.pairs {
-            if rebounding(a, &context.rebounds) {
-                context.rebound_partners.push((a, b));
-            }
-            if rebounding(b, &context.rebounds) {
-                context.rebound_partners.push((b, a));
-            }
-        }
-        context.rebound_partners.sort_unstable();
-        for &(slot, before) in &context.rebounds {
+        collect_rebound_partners(
+            &context.pairs,
+            &context.rebounds,
+            context.velocities.len(),
+            &mut context.rebound_partners,
+        );
+        for (k, &(slot, before)) in context.rebounds.iter().enumerate() {
             let Some(body) = self.slots[slot as usize].body.as_ref() else {
                 continue;
             };
             let bullet = body.bullet && body.is_simulated_dynamic();
             let cap = if bullet { MAX_BULLET_IMPACTS - 1 } else { 1 };
-            let first = context.rebound_partners.partition_point(|&(s, _)| s < slot);
-            let last = context
-                .rebound_partners
-                .partition_point(|&(s, _)| s <= slot);
-            let partners = &context.rebound_partners[first..last];
+            let partners = context.rebound_partners.of(k);
             let index = slot as usize;
             let mut at = body.position + before;
             let mut rest = context.displacements[index] - before;
             let mut velocity = context.velocities[index];
             for impact in 0..cap {
                 let mut earliest: Option<(S, Vec2<S>, u32)> = None;
-                for &(_, other) in partners {
+                for &other in partners {
                     let Some(ob) = self.slots[other as usize].body.as_ref() else {
                         continue;
                     };
