@@ -139,7 +139,11 @@ pub(crate) fn warm_start<S: Scalar>(
 
 /// Applies normal impulse `dn` and friction impulse `dt` (along
 /// `perp(n)`): `Δv_b = w_b·(n·dn + perp(n)·dt)`, `Δv_a = −w_a·(…)`.
-#[inline]
+///
+/// Always inlined: it runs once per row and sweep (~20 million times in
+/// 300 ticks of `balls5000`), and as a call it cost a fifth of its own
+/// work in saving and restoring registers.
+#[inline(always)]
 fn apply_row<S: Scalar>(c: &ContactConstraint<S>, dn: S, dt: S, velocities: &mut [Vec2<S>]) {
     // w·(n·dn + perp(n)·dt) = (p.x·dn − p.y·dt, p.y·dn + p.x·dt) for p = w·n,
     // each component one exact two-product sum, rounded once.
