@@ -81,6 +81,8 @@ impl RowGroups {
                 }
             }
         }
+        // Every slot at its root: the lookups below are one read each.
+        islands::flatten(parents);
         // The group of a row is the root of its (first) dynamic end; groups
         // are numbered in the order their first row appears.
         self.root_group.clear();
@@ -94,7 +96,7 @@ impl RowGroups {
             } else {
                 row.a
             };
-            let root = islands::find(parents, end) as usize;
+            let root = parents.get(end as usize).copied().unwrap_or(end) as usize;
             let group = match self.root_group.get(root).copied() {
                 Some(g) if g != u32::MAX => g,
                 _ => {
