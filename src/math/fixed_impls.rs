@@ -82,7 +82,18 @@ macro_rules! impl_scalar_fixed {
             }
             #[inline]
             fn sub(self, rhs: Self) -> Self {
-                self.saturating_sub(rhs)
+                // The same result as `saturating_sub`, in the form the
+                // compiler gives `saturating_add` (one instruction shorter
+                // on x86-64 than its own lowering of the subtraction): on
+                // overflow the wrapped difference has the wrong sign, so
+                // the bound is MAX when it is negative and MIN otherwise,
+                // i.e. `(wrapped >> 63) ^ MIN` on the raw bits.
+                let (wrapped, overflow) = self.to_bits().overflowing_sub(rhs.to_bits());
+                if overflow {
+                    <$t>::from_bits((wrapped >> 63) ^ i64::MIN)
+                } else {
+                    <$t>::from_bits(wrapped)
+                }
             }
             #[inline]
             fn mul(self, rhs: Self) -> Self {
