@@ -103,7 +103,7 @@ macro_rules! impl_scalar_fixed {
                 // `saturating_mul`, then the result is clamped. Bit-identical
                 // to `saturating_mul`, but without its general 128-bit path.
                 let product = i128::from(self.to_bits()) * i128::from(rhs.to_bits());
-                <$t>::from_bits(super::wide::saturate_to_i64(product >> $frac))
+                <$t>::from_bits(super::wide::shift_saturate::<$frac>(product))
             }
             #[inline]
             fn div(self, rhs: Self) -> Self {
@@ -165,7 +165,7 @@ macro_rules! impl_scalar_fixed {
                 let p = i128::from(a.to_bits()) * i128::from(b.to_bits());
                 let q = i128::from(c.to_bits()) * i128::from(d.to_bits());
                 match p.checked_add(q) {
-                    Some(sum) => <$t>::from_bits(super::wide::saturate_to_i64(sum >> $frac)),
+                    Some(sum) => <$t>::from_bits(super::wide::shift_saturate::<$frac>(sum)),
                     None => <$t>::MAX,
                 }
             }
@@ -178,7 +178,7 @@ macro_rules! impl_scalar_fixed {
                 let q = i128::from(c.to_bits()) * i128::from(d.to_bits());
                 match p.checked_sub(q) {
                     Some(difference) => {
-                        <$t>::from_bits(super::wide::saturate_to_i64(difference >> $frac))
+                        <$t>::from_bits(super::wide::shift_saturate::<$frac>(difference))
                     }
                     None if p > 0 => <$t>::MAX,
                     None => <$t>::MIN,

@@ -43,22 +43,33 @@ pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd {
     }
 }
 
-/// `value` clamped to the `i64` range. Within the world bounds products
-/// and sums never leave that range, so the test is one predictable branch
-/// and the clamp sits on a cold path (same result as a plain clamp).
+/// `value >> SHIFT` (an arithmetic shift: rounded toward −∞) clamped to
+/// the `i64` range, for `SHIFT` in `1..64`. Within the world bounds
+/// products and sums never leave that range, so the test is one
+/// predictable branch and the clamp sits on a cold path (same result as a
+/// plain clamp of the shifted value).
+///
+/// The test reads only the high word `h = ⌊value / 2⁶⁴⌋`: the shifted
+/// value fits `i64` iff `−2^(63+SHIFT) ≤ value < 2^(63+SHIFT)`, and since
+/// those bounds are multiples of 2⁶⁴ that is `−2^(SHIFT−1) ≤ h <
+/// 2^(SHIFT−1)`, i.e. `h` equals its own low `SHIFT` bits sign-extended
+/// (two instructions for `SHIFT = 32`, where testing the shifted value's
+/// round trip took five). Out of range, the shifted value has the sign of
+/// `value`.
 #[inline(always)]
-pub(crate) fn saturate_to_i64(value: i128) -> i64 {
-    // `as` keeps the low 64 bits; they are the value exactly when the
-    // value fits, which the round trip checks.
-    let low = value as i64;
-    if i128::from(low) == value {
-        low
+pub(crate) fn shift_saturate<const SHIFT: u32>(value: i128) -> i64 {
+    let high = (value >> 64) as i64;
+    let spare = 64 - SHIFT;
+    if (high << spare) >> spare == high {
+        // Fits: the low 64 bits of the shifted value are all of it.
+        (value >> SHIFT) as i64
     } else {
         saturate_out_of_range(value)
     }
 }
 
-/// The cold half of [`saturate_to_i64`]: `value` is outside the `i64` range.
+/// The cold half of [`shift_saturate`]: the shifted value is outside the
+/// `i64` range, on the side of `value`'s sign.
 #[cold]
 #[inline(never)]
 fn saturate_out_of_range(value: i128) -> i64 {
@@ -88,7 +99,7 @@ macro_rules! impl_wide_fixed {
                 // Drop the extra fraction bits with an arithmetic shift
                 // (rounding toward negative infinity, like the `fixed`
                 // crate's conversions), then clamp to the narrow range.
-                <$narrow>::from_bits(saturate_to_i64(self.to_bits() >> $shift))
+                <$narrow>::from_bits(shift_saturate::<$shift>(self.to_bits()))
             }
             #[inline]
             fn sqrt_narrow(self) -> $narrow {
@@ -168,3 +179,54 @@ pub struct WideFloat<T>(pub f64, pub core::marker::PhantomData<T>);
 
 impl_wide_float!(f64);
 impl_wide_float!(f32);
+
+#[cfg(test)]
+mod tests {
+    use super::shift_saturate;
+    use proptest::prelude::*;
+
+    /// The plain definition: shift, then clamp to the `i64` range.
+    fn reference(value: i128, shift: u32) -> i64 {
+        let shifted = value >> shift;
+        i64::try_from(shifted).unwrap_or(if shifted < 0 { i64::MIN } else { i64::MAX })
+    }
+
+    fn check(value: i128) {
+        assert_eq!(
+            shift_saturate::<32>(value),
+            reference(value, 32),
+            "{value:#x} >> 32"
+        );
+        assert_eq!(
+            shift_saturate::<16>(value),
+            reference(value, 16),
+            "{value:#x} >> 16"
+        );
+    }
+
+    /// The edges of the fitting range for both shifts, one off either side,
+    /// and the ends of `i128`.
+    #[test]
+    fn edges_match_shift_then_clamp() {
+        for shift in [16u32, 32] {
+            let top = 1i128 << (63 + shift);
+            for edge in [top, -top, 0, 1i128 << 64, -(1i128 << 64)] {
+                for delta in -2i128..=2 {
+                    check(edge + delta);
+                }
+            }
+        }
+        check(i128::MAX);
+        check(i128::MIN);
+        check(i128::MIN + 1);
+    }
+
+    proptest! {
+        #[test]
+        fn random_values_match_shift_then_clamp(high in any::<i64>(), low in any::<u64>(), scale in 0u32..64) {
+            // Values of every magnitude: a random high word shifted down.
+            let value = ((i128::from(high) << 64) | i128::from(low)) >> scale;
+            check(value);
+        }
+    }
+}
