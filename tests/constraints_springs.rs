@@ -356,13 +356,10 @@ fn radial_spring_vertical_hang_oscillates_about_l_plus_mg_over_k_with_period_wit
 /// ulps of `|r|·|v|` (≈ 6 · 2⁻³²), so 1e-6 relative over 600 steps (10 s)
 /// is a generous bound.
 ///
-/// Measured: it is NOT conserved. The engine's θ-method position rule
-/// `r' = r + h·(v + θ·Δv)` (θ ≈ 1/2 here) with the spring axis frozen at
-/// `r` gives `r'×v' − r×v = (1−θ)·h·v×v'` per step, which is positive
-/// whenever the velocity turns with the orbit: `r × v` grows by +14 % in 600 steps and
-/// ×180 in 6000 (the distance runs away to 17 units). The same numbers
-/// come out of an f64 model of the formula, so it is the formulation, not
-/// rounding. See the report for a suggested fix (midpoint axis).
+/// (An earlier formulation, with the axis frozen at `r`, changed `r × v` by
+/// `(1−θ)·h·v×v'` per step, always the same sign: +14 % in 600 steps. The
+/// radial row now pushes along the θ-lever of its ends, which keeps it;
+/// see `clockwork2d::constraints`, "Radial springs".)
 #[test]
 fn radial_spring_no_perpendicular_force_angular_momentum_conserved_over_600_steps() {
     let mut world = World::new(settings(0.0));
@@ -403,7 +400,6 @@ fn radial_spring_no_perpendicular_force_angular_momentum_conserved_over_600_step
 /// O((ω·h)²) of the energy scale m·g·L = 20, i.e. well under 1 % over
 /// 10 s if the scheme is conservative.
 ///
-/// Measured: the energy grows (same cause as the angular-momentum test).
 #[test]
 fn radial_spring_swing_from_horizontal_conserves_energy_within_1_percent_over_10_s() {
     let (rest, k, m, g): (f64, f64, f64, f64) = (2.0, 16.0, 1.0, 10.0);

@@ -14,8 +14,9 @@ use crate::math::{Scalar, Vec2};
 pub(crate) const MAX_SPRING_SWEEPS: usize = 8;
 
 /// The spring equations of one constraint: a bendy spring's two (one per
-/// axis, independent lanes x and y), or a radial spring's one, along its
-/// pole (lane x).
+/// axis, independent lanes x and y), or a radial spring's one (lane x,
+/// along a direction the sweeps re-evaluate; its geometry is the matching
+/// [`RadialRow`]).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SpringRow<S: Scalar> {
     /// Solver slot of the anchor `a` (the virtual ground for a point).
@@ -24,9 +25,9 @@ pub(crate) struct SpringRow<S: Scalar> {
     pub(crate) b: u32,
     /// The inverse masses `(w_a, w_b)` as the solver sees them.
     pub(crate) inverse_masses: (S, S),
-    /// `None` for a bendy spring (lane x along X, lane y along Y); the unit
-    /// axis `n` (from `a` to `b`) of a radial spring.
-    pub(crate) axis: Option<Vec2<S>>,
+    /// `false` for a bendy spring (lane x along X, lane y along Y), `true`
+    /// for a radial one (the next [`RadialRow`] in order).
+    pub(crate) radial: bool,
     /// `−h·k·x` per lane, with `x` the stretch at the start of the substep.
     pub(crate) target: Vec2<S>,
     /// `g = h·(θ_s·h·k + c)` per lane: how the impulse answers the stretch
@@ -78,6 +79,27 @@ impl<S: Scalar> SpringRow<S> {
 /// A row's `((g_x, g_y), θ_a·w_a + θ_b·w_b)` and its inverse diagonals.
 pub(crate) type InverseCache<S> = ((Vec2<S>, S), Vec2<S>);
 
+/// What the radial lane of the sweeps needs beyond a [`SpringRow`]: the
+/// geometry it re-linearises about in every sweep (the discrete gradient of
+/// [`crate::constraints`], "Radial springs").
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RadialRow<S: Scalar> {
+    /// `r = b − a` at the start of the substep.
+    pub(crate) offset: Vec2<S>,
+    /// `l = |r|`.
+    pub(crate) length: S,
+    /// `((1 − θ_a)·h, (1 − θ_b)·h)`: how far into the step each end's
+    /// position velocity places the point where the force acts.
+    pub(crate) lag: (S, S),
+    /// `θ̄ = (θ_a·w_a + θ_b·w_b) / (w_a + w_b)`: the weight of the start
+    /// length in the pole's scale `ℓ = θ̄·l + (1 − θ̄)·l'`.
+    pub(crate) length_weight: S,
+    /// `θ_s·h·k + c`: the impulse per unit of length change.
+    pub(crate) gain_per_length: S,
+    /// The impulse vector `λ·d` applied so far in this substep.
+    pub(crate) applied: Vec2<S>,
+}
+
 /// A spring's `(k, w_a + w_b, c)` and its blends and rate gains
 /// `(θ_x, θ_y, g_x, g_y)`.
 type BlendCache<S> = ((Vec2<S>, S, S), (S, S, S, S));
@@ -87,9 +109,9 @@ type BlendCache<S> = ((Vec2<S>, S, S), (S, S, S, S));
 pub(crate) struct SpringScratch<S: Scalar> {
     /// The rows of this substep, in constraint-slot order.
     pub(crate) rows: Vec<SpringRow<S>>,
-    /// Radial rows whose axis waits for the slots' blends: (row index,
-    /// offset b − a, relative velocity).
-    pub(crate) pending_radial: Vec<(usize, Vec2<S>, Vec2<S>)>,
+    /// The radial rows' geometry, in row order (blends and lags are set
+    /// once every slot's θ is known).
+    pub(crate) radial: Vec<RadialRow<S>>,
     /// Each slot's blend θ_b: the largest θ_s of the rows that move it (½
     /// for a slot no spring moves).
     pub(crate) body_theta: Vec<S>,
@@ -104,7 +126,7 @@ impl<S: Scalar> SpringScratch<S> {
     /// Empties the scratch for a substep with `slots` slots (blends ½).
     pub(crate) fn begin(&mut self, slots: usize) {
         self.rows.clear();
-        self.pending_radial.clear();
+        self.radial.clear();
         self.body_theta.clear();
         self.body_theta.resize(slots, S::ONE.half());
         self.last_blend = None;
@@ -112,17 +134,18 @@ impl<S: Scalar> SpringScratch<S> {
 
     /// Adds a row between the `ends` (slots, inverse masses; `w_a + w_b >
     /// 0`) with per-lane stretch, stiffness and damping `c`: a bendy
-    /// spring's (`axis` `None`) or a radial spring's (lane x; its axis is
-    /// set before [`SpringRow::finish`]). Raises the blend θ_b of each
-    /// moving end to the row's θ_s (see [`theta_for`]).
+    /// spring's (`radial` false) or a radial spring's (lane x; the caller
+    /// pushes its [`RadialRow`]). Raises the blend θ_b of each
+    /// moving end to the row's θ_s (see [`theta_for`]) and returns lane x's
+    /// θ_s.
     pub(crate) fn push_row(
         &mut self,
         ends: ((u32, u32), (S, S)),
-        axis: Option<Vec2<S>>,
+        radial: bool,
         stretch: Vec2<S>,
         (stiffness, damping): (Vec2<S>, S),
         h: S,
-    ) {
+    ) -> S {
         let (slots, inverse_masses) = ends;
         let w = inverse_masses.0.add(inverse_masses.1);
         let key = (stiffness, w, damping);
@@ -159,13 +182,14 @@ impl<S: Scalar> SpringScratch<S> {
             a: slots.0,
             b: slots.1,
             inverse_masses,
-            axis,
+            radial,
             target: -stretch.mul_elements(stiffness).scale(h),
             rate_gain: Vec2::new(gain_x, gain_y),
             inverse_diagonal: Vec2::new(S::ONE, S::ONE),
             position_push: (S::ZERO, S::ZERO),
             impulse: Vec2::ZERO,
         });
+        theta_x
     }
 }
 
@@ -178,7 +202,8 @@ impl<S: Scalar> SpringScratch<S> {
 /// the positions will see, with every impulse so far included)
 /// ```
 ///
-/// for its `λ_s` with the others held, i.e. adds
+/// (a radial row: its own equation re-linearised where the ends now are,
+/// see [`radial_lane`]) for its `λ_s` with the others held, i.e. adds
 /// `δ = r_s / (1 + g_s·(θ_a·w_a + θ_b·w_b))`, `r_s = −(h·k·x_s + g_s·ṽ_s) − λ_s`,
 /// and moves `p_a` by `−θ_a·w_a·δ·n`, `p_b` by `θ_b·w_b·δ·n`. The system is
 /// `(h²·K·Θ_s)⁻¹`-symmetrisable to `(h²·K·Θ_s)⁻¹ + G·Θ_b·M⁻¹·Gᵀ`,
@@ -194,51 +219,22 @@ impl<S: Scalar> SpringScratch<S> {
 /// sweeps made.
 pub(crate) fn solve_spring_rows<S: Scalar>(
     rows: &mut [SpringRow<S>],
+    radial: &mut [RadialRow<S>],
     position_velocities: &mut [Vec2<S>],
+    h: S,
 ) -> usize {
     // The impulses' scale, from the first sweep (later sweeps change them
     // by the coupling between springs, a small fraction while the sweeps
     // converge).
     let mut threshold = S::ZERO;
     for sweep in 1..=MAX_SPRING_SWEEPS {
-        let mut largest_change = S::ZERO;
-        for row in rows.iter_mut() {
-            let (a, b) = (row.a as usize, row.b as usize);
-            let relative = position_velocities[b] - position_velocities[a];
-            let (tw_a, tw_b) = row.position_push;
-            // The change of each end's position velocity per unit of the
-            // impulse change (a vector per lane).
-            let (change, size) = match row.axis {
-                None => {
-                    // Two independent lanes along X and Y.
-                    let residual = row.target - row.rate_gain.mul_elements(relative) - row.impulse;
-                    let change = residual.mul_elements(row.inverse_diagonal);
-                    row.impulse += change;
-                    (change, change.x.abs().max(change.y.abs()))
-                }
-                Some(axis) => {
-                    let rate = axis.dot(relative);
-                    let residual = row
-                        .target
-                        .x
-                        .sub(row.rate_gain.x.mul(rate))
-                        .sub(row.impulse.x);
-                    let change = residual.mul(row.inverse_diagonal.x);
-                    row.impulse.x = row.impulse.x.add(change);
-                    (axis.scale(change), change.abs())
-                }
-            };
-            let push_b = change.scale(tw_b);
-            // Equal ends (equal masses and blends) share the product.
-            let push_a = if tw_a == tw_b {
-                push_b
-            } else {
-                change.scale(tw_a)
-            };
-            position_velocities[a] -= push_a;
-            position_velocities[b] += push_b;
-            largest_change = largest_change.max(size);
-        }
+        // Scenes without radial springs get a sweep with no radial branch
+        // (the bendy lattices' cost is the sweep's inner loop).
+        let largest_change = if radial.is_empty() {
+            sweep_rows::<S, false>(rows, radial, position_velocities, h)
+        } else {
+            sweep_rows::<S, true>(rows, radial, position_velocities, h)
+        };
         if sweep == 1 {
             let largest_impulse = rows.iter().fold(S::ZERO, |m, row| {
                 m.max(row.impulse.x.abs()).max(row.impulse.y.abs())
@@ -250,6 +246,106 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
         }
     }
     MAX_SPRING_SWEEPS
+}
+
+/// One Gauss–Seidel sweep over the rows (see [`solve_spring_rows`]);
+/// `RADIAL` false skips the radial lane (no row is radial). Returns the
+/// sweep's largest impulse change.
+fn sweep_rows<S: Scalar, const RADIAL: bool>(
+    rows: &mut [SpringRow<S>],
+    radial: &mut [RadialRow<S>],
+    position_velocities: &mut [Vec2<S>],
+    h: S,
+) -> S {
+    let mut largest_change = S::ZERO;
+    let mut radial_rows = radial.iter_mut();
+    for row in rows.iter_mut() {
+        let (a, b) = (row.a as usize, row.b as usize);
+        let (tw_a, tw_b) = row.position_push;
+        // The change of the impulse (a vector: per lane for a bendy row,
+        // λ·d for a radial one).
+        let change = if RADIAL && row.radial {
+            let Some(geometry) = radial_rows.next() else {
+                continue;
+            };
+            radial_lane(
+                row,
+                geometry,
+                (position_velocities[a], position_velocities[b]),
+                h,
+            )
+        } else {
+            // Two independent lanes along X and Y.
+            let relative = position_velocities[b] - position_velocities[a];
+            let residual = row.target - row.rate_gain.mul_elements(relative) - row.impulse;
+            let change = residual.mul_elements(row.inverse_diagonal);
+            row.impulse += change;
+            change
+        };
+        let push_b = change.scale(tw_b);
+        // Equal ends (equal masses and blends) share the product.
+        let push_a = if tw_a == tw_b {
+            push_b
+        } else {
+            change.scale(tw_a)
+        };
+        position_velocities[a] -= push_a;
+        position_velocities[b] += push_b;
+        largest_change = largest_change.max(change.x.abs().max(change.y.abs()));
+    }
+    largest_change
+}
+
+/// One Gauss–Seidel update of a radial row, re-linearised about where the
+/// ends' position velocities `(p_a, p_b)` now put them (the discrete
+/// gradient of [`crate::constraints`], "Radial springs"): with
+/// `r' = r + h·(p_b − p_a)` and `l' = |r'|`, the row solves
+/// `λ = −h·k·(x + θ_s·(l' − l)) − c·(l' − l)` along
+/// `d = (r + (1 − θ_b)·h·p_b − (1 − θ_a)·h·p_a) / (θ̄·l + (1 − θ̄)·l')`.
+/// Returns the change of the impulse vector `λ·d` (already stored).
+fn radial_lane<S: Scalar>(
+    row: &mut SpringRow<S>,
+    geometry: &mut RadialRow<S>,
+    (p_a, p_b): (Vec2<S>, Vec2<S>),
+    h: S,
+) -> Vec2<S> {
+    let end = geometry.offset + (p_b - p_a).scale(h);
+    let end_length = end.length();
+    let (lag_a, lag_b) = geometry.lag;
+    let pole = geometry.offset + p_b.scale(lag_b) - p_a.scale(lag_a);
+    // ℓ = θ̄·l + (1 − θ̄)·l' ≥ 0; zero only for a body on its pivot.
+    let scale = end_length.add(geometry.length_weight.mul(geometry.length.sub(end_length)));
+    let direction = if scale.is_positive() {
+        let inverse = S::ONE.div(scale);
+        let d = pole.scale(inverse);
+        // |d| ≤ 1 when both ends share a blend (|pole| ≤ ℓ, see the
+        // module docs); a far larger one only comes from nearly
+        // coincident ends with unequal blends, where the unit pole is
+        // the sane direction.
+        if d.x.abs().max(d.y.abs()) <= S::from_int(2) {
+            d
+        } else {
+            pole.try_normalize().unwrap_or(Vec2::Y)
+        }
+    } else {
+        // A body exactly on its pivot (and at rest) is pushed along +Y,
+        // the geometry module's convention for coincident points.
+        pole.try_normalize().unwrap_or(Vec2::Y)
+    };
+    let residual = row
+        .target
+        .x
+        .sub(
+            geometry
+                .gain_per_length
+                .mul(end_length.sub(geometry.length)),
+        )
+        .sub(row.impulse.x);
+    row.impulse.x = row.impulse.x.add(residual.mul(row.inverse_diagonal.x));
+    let applied = direction.scale(row.impulse.x);
+    let change = applied - geometry.applied;
+    geometry.applied = applied;
+    change
 }
 
 #[cfg(test)]
@@ -282,14 +378,14 @@ mod tests {
             };
             scratch.push_row(
                 ((1, 0), (0.0, 1.0)),
-                None,
+                false,
                 Vec2::new(x, 0.0),
                 (Vec2::new(k, k), 0.0),
                 h,
             );
             finish_all(&mut scratch);
             let mut p = vec![Vec2::new(v, 0.0), Vec2::ZERO];
-            assert!(solve_spring_rows(&mut scratch.rows, &mut p) <= 2);
+            assert!(solve_spring_rows(&mut scratch.rows, &mut [], &mut p, h) <= 2);
             let theta = scratch.body_theta[0];
             x += h * p[0].x;
             v += (p[0].x - v) / theta;
@@ -312,15 +408,27 @@ mod tests {
             ..SpringScratch::default()
         };
         let stiffness = (Vec2::new(k, k), 0.0);
-        scratch.push_row(((2, 0), (0.0, 1.0)), None, Vec2::new(x1, 0.0), stiffness, h);
-        scratch.push_row(((0, 1), (1.0, 1.0)), None, Vec2::new(x2, 0.0), stiffness, h);
+        scratch.push_row(
+            ((2, 0), (0.0, 1.0)),
+            false,
+            Vec2::new(x1, 0.0),
+            stiffness,
+            h,
+        );
+        scratch.push_row(
+            ((0, 1), (1.0, 1.0)),
+            false,
+            Vec2::new(x2, 0.0),
+            stiffness,
+            h,
+        );
         finish_all(&mut scratch);
         // Both bodies carry the larger blend (the 0→1 spring's).
         let theta = scratch.body_theta[0];
         assert_eq!(theta, scratch.body_theta[1]);
         let (t1, t2) = (theta_for(k, 1.0, h), theta_for(k, 2.0, h));
         let mut p = vec![Vec2::new(v0, 0.0), Vec2::new(v1, 0.0), Vec2::ZERO];
-        solve_spring_rows(&mut scratch.rows, &mut p);
+        solve_spring_rows(&mut scratch.rows, &mut [], &mut p, h);
         // λ_s = −h·k·(x_s + θ_s·h·ṽ_s) with ṽ_1 = v0 + θ·(λ1 − λ2),
         // ṽ_2 = (v1 − v0) + θ·(2·λ2 − λ1) (unit masses):
         // [1 + g1·θ, −g1·θ; −g2·θ, 1 + 2·g2·θ]·λ = −h·k·[x1 + θ1·h·v0; x2 + θ2·h·(v1 − v0)],

@@ -5,7 +5,7 @@
 //! body) with zero velocity and zero inverse mass, so rope rows share the
 //! contact solver's indexing without special cases.
 
-use crate::constraints::spring_solve::solve_spring_rows;
+use crate::constraints::spring_solve::{RadialRow, solve_spring_rows};
 use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::{ContactConstraint, effective_mass};
@@ -104,7 +104,7 @@ impl<S: Scalar> World<S> {
                     ..
                 } => {
                     let stretch = sb.position - sa.position - rest_offset;
-                    scratch.push_row(ends, None, stretch, (stiffness, damping), h);
+                    scratch.push_row(ends, false, stretch, (stiffness, damping), h);
                 }
                 Constraint::RadialSpring {
                     rest_length,
@@ -113,19 +113,26 @@ impl<S: Scalar> World<S> {
                     ..
                 } => {
                     let offset = sb.position - sa.position;
-                    let stretch = offset.length().sub(rest_length);
-                    // The axis is set once every slot's θ is known (below).
-                    let row = scratch.rows.len();
-                    scratch.push_row(
+                    let length = offset.length();
+                    let stretch = length.sub(rest_length);
+                    // The direction is found in the sweeps; the lags and
+                    // the length weight once every slot's θ is known
+                    // (below).
+                    let theta = scratch.push_row(
                         ends,
-                        Some(Vec2::Y),
+                        true,
                         Vec2::new(stretch, S::ZERO),
                         (Vec2::new(stiffness, stiffness), damping),
                         h,
                     );
-                    scratch
-                        .pending_radial
-                        .push((row, offset, sb.velocity - sa.velocity));
+                    scratch.radial.push(RadialRow {
+                        offset,
+                        length,
+                        lag: (S::ZERO, S::ZERO),
+                        length_weight: S::ONE,
+                        gain_per_length: theta.mul(h).mul(stiffness).add(damping),
+                        applied: Vec2::ZERO,
+                    });
                 }
                 Constraint::Rope { .. } => continue,
             }
@@ -137,28 +144,23 @@ impl<S: Scalar> World<S> {
             self.step_context.springs = scratch;
             return;
         }
-        // A radial spring pushes along the pole where the θ-method
-        // evaluates its force: the relative position moves by
-        // h·(v + θ·Δv), so the pole is taken at r + (1−θ)·h·v (θ the
-        // mass-weighted blend of its two ends). An impulse along r itself
-        // would change r × v by (1−θ)·h·(v × v') every step, always with
-        // the same sign while the body orbits, so the swing would gain
-        // angular momentum and energy without bound; along this axis r × v
-        // is conserved (to rounding). A body exactly at the pivot (and at
-        // rest) is pushed along +Y, the geometry module's convention for
-        // coincident points.
-        for &(row_index, offset, relative_velocity) in &scratch.pending_radial {
-            let row = &mut scratch.rows[row_index];
+        // A radial spring pushes along the pole through the points where
+        // the θ-method evaluates its ends, r + (1 − θ_b)·Δq_b −
+        // (1 − θ_a)·Δq_a (`constraints`, "Radial springs": this keeps the
+        // angular momentum); each end's lag (1 − θ)·h is fixed here.
+        let mut radial = scratch.radial.iter_mut();
+        for row in scratch.rows.iter().filter(|row| row.radial) {
+            let Some(geometry) = radial.next() else {
+                break;
+            };
             let (w_a, w_b) = row.inverse_masses;
             let (t_a, t_b) = (
                 scratch.body_theta[row.a as usize],
                 scratch.body_theta[row.b as usize],
             );
+            geometry.lag = (S::ONE.sub(t_a).mul(h), S::ONE.sub(t_b).mul(h));
             // w_a + w_b > 0 (checked when the row was built).
-            let theta = t_a.mul(w_a).add(t_b.mul(w_b)).div(w_a.add(w_b));
-            let lever = offset + relative_velocity.scale(h).scale(S::ONE.sub(theta));
-            let axis = lever.try_normalize().unwrap_or(Vec2::Y);
-            row.axis = Some(axis);
+            geometry.length_weight = t_a.mul(w_a).add(t_b.mul(w_b)).div(w_a.add(w_b));
         }
         let mut last_inverse = None;
         for row in &mut scratch.rows {
@@ -172,7 +174,12 @@ impl<S: Scalar> World<S> {
         scratch
             .position_velocities
             .extend_from_slice(&context.velocities);
-        solve_spring_rows(&mut scratch.rows, &mut scratch.position_velocities);
+        solve_spring_rows(
+            &mut scratch.rows,
+            &mut scratch.radial,
+            &mut scratch.position_velocities,
+            h,
+        );
         // Velocities: v = v₀ + Δv with θ_b·Δv = p − v₀ (θ_b ∈ [½, 1], so
         // the division is defined); positions follow p, so v − p is the
         // share (1 − θ_b)·Δv they do not see.
