@@ -10,19 +10,21 @@ pub(crate) fn reset(parents: &mut Vec<u32>, count: usize) {
     parents.extend((0..count).map(|i| u32::try_from(i).unwrap_or(u32::MAX)));
 }
 
-/// The root of `i`, compressing the path on the way.
+/// The root of `i`, halving the path on the way (each visited slot is
+/// pointed at its grandparent: one pass, where full compression walks the
+/// path twice). The root is the island's smallest slot whatever the
+/// compression, so results do not depend on it.
 pub(crate) fn find(parents: &mut [u32], i: u32) -> u32 {
-    let mut root = i;
-    while parents[root as usize] != root {
-        root = parents[root as usize];
-    }
     let mut node = i;
-    while parents[node as usize] != root {
-        let next = parents[node as usize];
-        parents[node as usize] = root;
-        node = next;
+    loop {
+        let parent = parents[node as usize];
+        if parent == node {
+            return node;
+        }
+        let grandparent = parents[parent as usize];
+        parents[node as usize] = grandparent;
+        node = grandparent;
     }
-    root
 }
 
 /// Points every slot straight at its root, in one forward pass; afterwards
