@@ -43,10 +43,12 @@
 //! is a different map whose energy balance has an extra term of either
 //! sign: 32 × 32 lattices of light bodies at ω·h ≈ 1 gained energy
 //! without bound. So the step builds one row per spring and
-//! solves the system above by Gauss–Seidel sweeps from λ = 0
-//! (`spring_solve.rs`): in the symmetrised form `(h²·K·Θ_s)⁻¹ + G·Θ_b·M⁻¹·Gᵀ`
+//! solves the system above by Gauss–Seidel sweeps (`spring_solve.rs`), a
+//! resolved bendy spring starting from its free impulse
+//! `−h·k_s·x_s − g_s·ṽ_s` (exact inside a uniformly loaded lattice), the
+//! others from 0: in the symmetrised form `(h²·K·Θ_s)⁻¹ + G·Θ_b·M⁻¹·Gᵀ`
 //! (positive definite) the sweeps converge, and they stop when a sweep's
-//! largest change is ≤ 2⁻⁸ of the largest impulse, or after 8 sweeps. A
+//! largest change is ≤ 2⁻⁹ of the largest impulse, or after 8 sweeps. A
 //! single spring, or springs that share no body, are exact in the first.
 //! The remaining residual `r` adds `Σ_s r_s·Δx_s/h` to ΔE; measured on
 //! lattices, chains, uneven masses and ω·h from 0.1 to 10

@@ -1,5 +1,6 @@
 //! The simultaneous spring solve: every spring row of a substep solved
-//! together (Gauss–Seidel sweeps on the impulses, from zero, until they
+//! together (Gauss–Seidel sweeps on the impulses, from each bendy spring's
+//! free impulse, until they
 //! settle), so that no spring sees velocities that others already changed
 //! as if they were the start of the step. Maths in [`crate::constraints`]
 //! ("Why springs are solved together").
@@ -8,7 +9,7 @@ use super::spring::theta_for;
 use crate::math::{Scalar, Vec2};
 
 /// Most sweeps of one spring solve. A resolved lattice (ω·h ≤ 0.3)
-/// settles in 2–3 sweeps, ω·h = 1 in about 4 (the tolerance below); stiffer
+/// settles in 1–2 sweeps from its free impulses (the tolerance below); stiffer
 /// springs are implicit Euler (θ = 1), whose damping absorbs what the capped
 /// iteration leaves (measured: `tests/spring_lattice_energy.rs`).
 pub(crate) const MAX_SPRING_SWEEPS: usize = 8;
@@ -45,22 +46,23 @@ pub(crate) struct SpringRow<S: Scalar> {
 impl<S: Scalar> SpringRow<S> {
     /// The pushes and the inverse diagonals for the slot blends `θ_a`,
     /// `θ_b` (each in [½, 1]); the impulse starts at zero. `last` carries
-    /// the previous row's `(g_x, g_y, θ_a·w_a + θ_b·w_b)` and inverse
-    /// diagonals: rows of a lattice mostly share them, and a division is
-    /// the costliest step here.
+    /// the previous row's gains, inverse masses and blends with its pushes
+    /// and inverse diagonals: rows of a lattice mostly share them, and a
+    /// division is the costliest step here.
     pub(crate) fn finish(&mut self, theta_a: S, theta_b: S, last: &mut Option<InverseCache<S>>) {
+        self.impulse = Vec2::ZERO;
+        let key = (self.rate_gain, self.inverse_masses, theta_a, theta_b);
+        if let Some((cached, (push, inverse))) = *last
+            && cached == key
+        {
+            self.position_push = push;
+            self.inverse_diagonal = inverse;
+            return;
+        }
         let (w_a, w_b) = self.inverse_masses;
         let (tw_a, tw_b) = (theta_a.mul(w_a), theta_b.mul(w_b));
         self.position_push = (tw_a, tw_b);
         let tw = tw_a.add(tw_b);
-        let key = (self.rate_gain, tw);
-        self.impulse = Vec2::ZERO;
-        if let Some((cached, inverse)) = *last
-            && cached == key
-        {
-            self.inverse_diagonal = inverse;
-            return;
-        }
         // 1 + g·(θ_a·w_a + θ_b·w_b) ≥ 1: all terms are non-negative, so the
         // division is defined and the result lies in (0, 1]. Equal lanes
         // (k_x = k_y) share one division.
@@ -72,12 +74,29 @@ impl<S: Scalar> SpringRow<S> {
             inverse(self.rate_gain.y)
         };
         self.inverse_diagonal = Vec2::new(x, y);
-        *last = Some((key, self.inverse_diagonal));
+        *last = Some((key, (self.position_push, self.inverse_diagonal)));
+    }
+
+    /// Moves the ends' position velocities by an impulse change `change`
+    /// (a vector per lane): `p_a −= θ_a·w_a·change`, `p_b += θ_b·w_b·change`.
+    #[inline]
+    fn push(&self, change: Vec2<S>, position_velocities: &mut [Vec2<S>]) {
+        let (tw_a, tw_b) = self.position_push;
+        let push_b = change.scale(tw_b);
+        // Equal ends (equal masses and blends) share the product.
+        let push_a = if tw_a == tw_b {
+            push_b
+        } else {
+            change.scale(tw_a)
+        };
+        position_velocities[self.a as usize] -= push_a;
+        position_velocities[self.b as usize] += push_b;
     }
 }
 
-/// A row's `((g_x, g_y), θ_a·w_a + θ_b·w_b)` and its inverse diagonals.
-pub(crate) type InverseCache<S> = ((Vec2<S>, S), Vec2<S>);
+/// A row's `((g_x, g_y), (w_a, w_b), θ_a, θ_b)` and its pushes
+/// `(θ_a·w_a, θ_b·w_b)` and inverse diagonals.
+pub(crate) type InverseCache<S> = ((Vec2<S>, (S, S), S, S), ((S, S), Vec2<S>));
 
 /// What the radial lane of the sweeps needs beyond a [`SpringRow`]: the
 /// geometry it re-linearises about in every sweep (the discrete gradient of
@@ -100,9 +119,9 @@ pub(crate) struct RadialRow<S: Scalar> {
     pub(crate) applied: Vec2<S>,
 }
 
-/// A spring's `(k, w_a + w_b, c)` and its blends and rate gains
-/// `(θ_x, θ_y, g_x, g_y)`.
-type BlendCache<S> = ((Vec2<S>, S, S), (S, S, S, S));
+/// A spring's `(k, w_a + w_b, c)` and its blends, rate gains and stretch
+/// gains `(θ_x, θ_y, g_x, g_y, −h·k)`.
+type BlendCache<S> = ((Vec2<S>, S, S), (S, S, S, S, Vec2<S>));
 
 /// Working memory of the spring solve (derived; never part of the state).
 #[derive(Clone, Debug, Default)]
@@ -149,7 +168,7 @@ impl<S: Scalar> SpringScratch<S> {
         let (slots, inverse_masses) = ends;
         let w = inverse_masses.0.add(inverse_masses.1);
         let key = (stiffness, w, damping);
-        let (theta_x, theta_y, gain_x, gain_y) = match self.last_blend {
+        let (theta_x, theta_y, gain_x, gain_y, stretch_gain) = match self.last_blend {
             Some((cached, blend)) if cached == key => blend,
             _ => {
                 let theta_x = theta_for(stiffness.x, w, h);
@@ -165,7 +184,10 @@ impl<S: Scalar> SpringScratch<S> {
                 } else {
                     gain(stiffness.y, theta_y)
                 };
-                let blend = (theta_x, theta_y, gain_x, gain_y);
+                // The impulse per unit stretch, −h·k (one product per
+                // distinct spring instead of two per row).
+                let stretch_gain = -stiffness.scale(h);
+                let blend = (theta_x, theta_y, gain_x, gain_y, stretch_gain);
                 self.last_blend = Some((key, blend));
                 blend
             }
@@ -183,13 +205,63 @@ impl<S: Scalar> SpringScratch<S> {
             b: slots.1,
             inverse_masses,
             radial,
-            target: -stretch.mul_elements(stiffness).scale(h),
+            target: stretch.mul_elements(stretch_gain),
             rate_gain: Vec2::new(gain_x, gain_y),
             inverse_diagonal: Vec2::new(S::ONE, S::ONE),
             position_push: (S::ZERO, S::ZERO),
             impulse: Vec2::ZERO,
         });
         theta_x
+    }
+}
+
+/// The smallest inverse diagonal `1 / (1 + g·(θ_a·w_a + θ_b·w_b))` of a
+/// lane that starts from its free impulse: `g·(θ_a·w_a + θ_b·w_b) ≤ 1/4`
+/// (ω·h up to about 1 for equal masses).
+const RESOLVED_INVERSE_DIAGONAL: (i32, i32) = (4, 5);
+
+/// Starts every resolved lane of a bendy row from its *free* impulse
+/// `λ⁰_s = −h·k·x_s − g_s·ṽ⁰_s` (`ṽ⁰_s` the stretch rate at the substep's
+/// velocities `v₀`) and moves the ends' position velocities by it; stiffer
+/// lanes and radial rows (re-linearised in every sweep) start from zero.
+///
+/// The exact impulse is `λ_s = λ⁰_s − g_s·n·(Δp_b − Δp_a)`, with `Δp` the
+/// pushes of all impulses (this lane's own included) on its two ends. A
+/// spring inside a uniformly loaded chain or lattice (a hanging cloth, a
+/// stretched chain) has its ends pulled on the far side by the same
+/// tension, so those pushes cancel and `λ⁰` is the answer up to the load's
+/// gradient; elsewhere the start is off by the mobility term, at most about
+/// `g·(θ_a·w_a + θ_b·w_b)` (≤ 1/4 here) of the neighbouring impulses.
+/// Starting from zero instead is off by the whole impulse: the springs
+/// bench lattice (ω·h = 0.56) needed three sweeps from zero and needs one
+/// or two from here. The start's error is proportional to impulses, not to
+/// the stretch rate, so what the sweeps leave of it is no viscous bias:
+/// starting from `−h·k·x` alone (without the rate term) made a 32 × 32
+/// lattice at ω·h = 0.3 lose 2.3 % of its energy in 60 s. A stiff lane
+/// (the mobility term dominates) starts from zero: starting 200-spring
+/// chains at ω·h = 10 from `−h·k·x` made them gain energy without bound,
+/// because the capped sweeps then overshoot instead of under-solving.
+fn start_from_free_impulses<S: Scalar>(
+    rows: &mut [SpringRow<S>],
+    velocities: &[Vec2<S>],
+    position_velocities: &mut [Vec2<S>],
+) {
+    let resolved = S::from_ratio(RESOLVED_INVERSE_DIAGONAL.0, RESOLVED_INVERSE_DIAGONAL.1);
+    let start = |free: S, inverse_diagonal: S| {
+        if inverse_diagonal >= resolved {
+            free
+        } else {
+            S::ZERO
+        }
+    };
+    for row in rows.iter_mut().filter(|row| !row.radial) {
+        let relative = velocities[row.b as usize] - velocities[row.a as usize];
+        let free = row.target - row.rate_gain.mul_elements(relative);
+        row.impulse = Vec2::new(
+            start(free.x, row.inverse_diagonal.x),
+            start(free.y, row.inverse_diagonal.y),
+        );
+        row.push(row.impulse, position_velocities);
     }
 }
 
@@ -207,26 +279,30 @@ impl<S: Scalar> SpringScratch<S> {
 /// `δ = r_s / (1 + g_s·(θ_a·w_a + θ_b·w_b))`, `r_s = −(h·k·x_s + g_s·ṽ_s) − λ_s`,
 /// and moves `p_a` by `−θ_a·w_a·δ·n`, `p_b` by `θ_b·w_b·δ·n`. The system is
 /// `(h²·K·Θ_s)⁻¹`-symmetrisable to `(h²·K·Θ_s)⁻¹ + G·Θ_b·M⁻¹·Gᵀ`,
-/// symmetric positive definite, so the sweeps converge. They stop when
-/// the largest change of a sweep is at most 2⁻⁸ of the largest impulse
-/// after the first sweep (or after [`MAX_SPRING_SWEEPS`]); 2⁻¹⁰ and 2⁻¹³
-/// gave the same energy figures on the lattice tests, one and two sweeps
-/// dearer. Stopping one
+/// symmetric positive definite, so the sweeps converge. They start from
+/// the free impulses ([`start_from_free_impulses`]) and stop when the
+/// largest change of a sweep is at most 2⁻⁹ of the largest impulse after
+/// the first sweep (or after [`MAX_SPRING_SWEEPS`]), the first sweep
+/// included: its change is the start's error. Measured on
+/// `tests/spring_lattice_energy.rs`: from zero, 2⁻⁸, 2⁻¹⁰ and 2⁻¹³ gave
+/// the same energy figures; from the free impulses, 2⁻⁸ with at least two
+/// sweeps and 2⁻⁹ from one sweep on both keep every bound. Stopping one
 /// sweep earlier on a geometric extrapolation of the changes still to come
-/// was tried: a 32 × 32 lattice at ω·h = 0.3 then rose to 1.013 × its
-/// energy over 60 s. The velocities follow from
+/// was tried (from zero): a 32 × 32 lattice at ω·h = 0.3 then rose to
+/// 1.013 × its energy over 60 s. The velocities follow from
 /// `v = v₀ + (p − v₀)/θ_b` (the caller's job). Returns the number of
 /// sweeps made.
 pub(crate) fn solve_spring_rows<S: Scalar>(
     rows: &mut [SpringRow<S>],
     radial: &mut [RadialRow<S>],
-    position_velocities: &mut [Vec2<S>],
+    (velocities, position_velocities): (&[Vec2<S>], &mut [Vec2<S>]),
     h: S,
 ) -> usize {
     // The impulses' scale, from the first sweep (later sweeps change them
     // by the coupling between springs, a small fraction while the sweeps
-    // converge).
+    // converge). 2⁻⁹ = 1/512.
     let mut threshold = S::ZERO;
+    start_from_free_impulses(rows, velocities, position_velocities);
     for sweep in 1..=MAX_SPRING_SWEEPS {
         // Scenes without radial springs get a sweep with no radial branch
         // (the bendy lattices' cost is the sweep's inner loop).
@@ -239,7 +315,7 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
             let largest_impulse = rows.iter().fold(S::ZERO, |m, row| {
                 m.max(row.impulse.x.abs()).max(row.impulse.y.abs())
             });
-            threshold = largest_impulse.mul(S::from_ratio(1, 256));
+            threshold = largest_impulse.mul(S::from_ratio(1, 512));
         }
         if largest_change <= threshold {
             return sweep;
@@ -385,7 +461,7 @@ mod tests {
             );
             finish_all(&mut scratch);
             let mut p = vec![Vec2::new(v, 0.0), Vec2::ZERO];
-            assert!(solve_spring_rows(&mut scratch.rows, &mut [], &mut p, h) <= 2);
+            assert!(solve_spring_rows(&mut scratch.rows, &mut [], (&p.clone(), &mut p), h) <= 2);
             let theta = scratch.body_theta[0];
             x += h * p[0].x;
             v += (p[0].x - v) / theta;
@@ -428,7 +504,7 @@ mod tests {
         assert_eq!(theta, scratch.body_theta[1]);
         let (t1, t2) = (theta_for(k, 1.0, h), theta_for(k, 2.0, h));
         let mut p = vec![Vec2::new(v0, 0.0), Vec2::new(v1, 0.0), Vec2::ZERO];
-        solve_spring_rows(&mut scratch.rows, &mut [], &mut p, h);
+        solve_spring_rows(&mut scratch.rows, &mut [], (&p.clone(), &mut p), h);
         // λ_s = −h·k·(x_s + θ_s·h·ṽ_s) with ṽ_1 = v0 + θ·(λ1 − λ2),
         // ṽ_2 = (v1 − v0) + θ·(2·λ2 − λ1) (unit masses):
         // [1 + g1·θ, −g1·θ; −g2·θ, 1 + 2·g2·θ]·λ = −h·k·[x1 + θ1·h·v0; x2 + θ2·h·(v1 − v0)],

@@ -177,7 +177,7 @@ impl<S: Scalar> World<S> {
         solve_spring_rows(
             &mut scratch.rows,
             &mut scratch.radial,
-            &mut scratch.position_velocities,
+            (&context.velocities, &mut scratch.position_velocities),
             h,
         );
         // Velocities: v = v₀ + Δv with θ_b·Δv = p − v₀ (θ_b ∈ [½, 1], so
