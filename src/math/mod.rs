@@ -21,6 +21,7 @@
 
 mod fixed_impls;
 mod float_impls;
+mod isqrt;
 mod scalar;
 mod vec2;
 mod wide;

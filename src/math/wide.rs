@@ -117,8 +117,9 @@ macro_rules! impl_wide_fixed {
                 let w = bits.unsigned_abs();
                 let root: u128 = match u64::try_from(w) {
                     // Most squared lengths in a world fit 64 bits; the u64
-                    // root is several times cheaper than the u128 one.
-                    Ok(small) => u128::from(small.isqrt()),
+                    // root (one division, `math::isqrt`) is several times
+                    // cheaper than the u128 one.
+                    Ok(small) => u128::from(super::isqrt::isqrt_u64(small)),
                     Err(_) => w.isqrt(),
                 };
                 // Saturate: only roots of values above the narrow range's
