@@ -40,6 +40,34 @@ fn ball(world: &mut World, mass: f64, p: (f64, f64), v: (f64, f64)) -> BodyId {
         .expect("ball")
 }
 
+/// Two balls of masses `m1`, `m2` on a radial spring (rest length `rest`,
+/// stiffness `k`, damping `c`), gravity off: stretched to `start` along x
+/// with the centre of mass at the origin and at rest, and relative velocity
+/// (0, 4), so the pair spins and breathes about a fixed centre.
+#[allow(clippy::float_arithmetic)]
+fn spinning_dumbbell(
+    (m1, m2): (f64, f64),
+    (rest, start): (f64, f64),
+    (k, c): (f64, f64),
+) -> (World, BodyId, BodyId) {
+    let total = m1 + m2;
+    let (x1, x2) = (-m2 / total * start, m1 / total * start);
+    let (u1, u2) = (-m2 / total * 4.0, m1 / total * 4.0);
+    let mut world = World::new(settings(0.0));
+    let a = ball(&mut world, m1, (x1, 0.0), (0.0, u1));
+    let b = ball(&mut world, m2, (x2, 0.0), (0.0, u2));
+    world
+        .add_constraint(Constraint::radial_spring(
+            Anchor::Body(a),
+            Anchor::Body(b),
+            fx(rest),
+            fx(k),
+            fx(c),
+        ))
+        .unwrap();
+    (world, a, b)
+}
+
 /// The blend θ − ½ of a spring of this ω·h (module docs of
 /// `clockwork2d::constraints`).
 #[allow(clippy::float_arithmetic)]
@@ -143,26 +171,12 @@ fn circular_orbit_keeps_radius_angular_momentum_and_the_midpoint_phase() {
 #[allow(clippy::float_arithmetic)]
 fn spinning_dumbbell_keeps_angular_momentum_at_every_stiffness() {
     let (m1, m2, rest, start) = (1.0f64, 3.0f64, 1.0f64, 1.3f64);
-    let total = m1 + m2;
     for omega_h in [0.1f64, 0.3, 1.0, 3.0, 10.0] {
         let omega = omega_h / H;
         let k = omega * omega / (1.0 / m1 + 1.0 / m2);
         // Centre of mass at the origin and at rest: positions −m2/M·s and
         // m1/M·s along x, relative velocity (0, 4).
-        let (x1, x2) = (-m2 / total * start, m1 / total * start);
-        let (u1, u2) = (-m2 / total * 4.0, m1 / total * 4.0);
-        let mut world = World::new(settings(0.0));
-        let a = ball(&mut world, m1, (x1, 0.0), (0.0, u1));
-        let b = ball(&mut world, m2, (x2, 0.0), (0.0, u2));
-        world
-            .add_constraint(Constraint::radial_spring(
-                Anchor::Body(a),
-                Anchor::Body(b),
-                fx(rest),
-                fx(k),
-                fx(0.0),
-            ))
-            .unwrap();
+        let (mut world, a, b) = spinning_dumbbell((m1, m2), (rest, start), (k, 0.0));
         let state = |w: &World| {
             let ((pa, va), (pb, vb)) = ((pos(w, a), vel(w, a)), (pos(w, b), vel(w, b)));
             let angular = m1 * (pa.0 * va.1 - pa.1 * va.0) + m2 * (pb.0 * vb.1 - pb.1 * vb.0);
@@ -268,26 +282,12 @@ fn stiff_radial_pendulum_from_the_horizontal_keeps_its_energy() {
 #[allow(clippy::float_arithmetic)]
 fn damped_spinning_dumbbell_rises_at_most_by_the_defect_bound_and_keeps_angular_momentum() {
     let (m1, m2, rest, start, zeta) = (1.0f64, 3.0f64, 1.0f64, 1.3f64, 0.2f64);
-    let total = m1 + m2;
     let w = 1.0 / m1 + 1.0 / m2;
     for omega_h in [0.3f64, 1.0] {
         let omega = omega_h / H;
         let k = omega * omega / w;
         let c = 2.0 * zeta * omega / w;
-        let (x1, x2) = (-m2 / total * start, m1 / total * start);
-        let (u1, u2) = (-m2 / total * 4.0, m1 / total * 4.0);
-        let mut world = World::new(settings(0.0));
-        let a = ball(&mut world, m1, (x1, 0.0), (0.0, u1));
-        let b = ball(&mut world, m2, (x2, 0.0), (0.0, u2));
-        world
-            .add_constraint(Constraint::radial_spring(
-                Anchor::Body(a),
-                Anchor::Body(b),
-                fx(rest),
-                fx(k),
-                fx(c),
-            ))
-            .unwrap();
+        let (mut world, a, b) = spinning_dumbbell((m1, m2), (rest, start), (k, c));
         // (angular momentum, energy, defect bound for the next step)
         let state = |w: &World| {
             let ((pa, va), (pb, vb)) = ((pos(w, a), vel(w, a)), (pos(w, b), vel(w, b)));
