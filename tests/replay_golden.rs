@@ -33,9 +33,9 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0xa8debe5369f84f95),
     ("pyramid", 0x3d01e0036e41895e),
-    ("balls", 0xa1c461004013373c),
+    ("balls", 0xd06cf6ae7aa1ab5b),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0x2c1f3970365c4bf6),
+    ("mixed", 0x7cb1ab822589ed10),
 ];
 // END GOLDEN
 

@@ -49,15 +49,18 @@ fn dynamic_end<S: Scalar>(row: &ContactConstraint<S>, end: u32) -> Option<u32> {
 }
 
 /// Appends to `out` the elimination plan of `group` (leaves first) and
-/// returns true when the group's dynamic bodies and rows form a tree; on a
-/// cycle it returns false and leaves `out` as it was. Linear in the
-/// group's size: a breadth-first search from the first row's dynamic end
-/// builds the parent links, and the rows listed in the reverse of the
+/// returns true when the group's dynamic bodies and rows, without the rows
+/// marked in `off_tree` (indexed by row), form a tree; on a cycle it
+/// returns false and leaves `out` as it was. The rows off the tree are not
+/// in the plan: the solves treat them by sequential impulses. Linear in the
+/// group's size: a breadth-first search from the first tree row's dynamic
+/// end builds the parent links, and the rows listed in the reverse of the
 /// search order have every child body's rows before the body's own parent
 /// row.
 pub(crate) fn plan_tree<S: Scalar>(
     rows: &[ContactConstraint<S>],
     group: &[usize],
+    off_tree: &[bool],
     slot_count: usize,
     planner: &mut TreePlanner,
     out: &mut Vec<TreeRow>,
@@ -71,6 +74,11 @@ pub(crate) fn plan_tree<S: Scalar>(
     planner.placed.clear();
     planner.placed.resize(group.len(), false);
     for (position, &ri) in group.iter().enumerate() {
+        if off_tree.get(ri).copied().unwrap_or(false) {
+            // Not part of the tree: counts as placed, never linked.
+            planner.placed[position] = true;
+            continue;
+        }
         for end in 0..2 {
             if let Some(k) = dynamic_end(&rows[ri], end) {
                 let incidence = u32::try_from(2 * position).unwrap_or(NONE) + end;
@@ -82,7 +90,10 @@ pub(crate) fn plan_tree<S: Scalar>(
     let start = out.len();
     planner.queue.clear();
     let is_tree = 'search: {
-        let Some(&first) = group.first() else {
+        let Some(&first) = group
+            .iter()
+            .find(|&&ri| !off_tree.get(ri).copied().unwrap_or(false))
+        else {
             break 'search true;
         };
         let Some(root) = dynamic_end(&rows[first], 1).or(dynamic_end(&rows[first], 0)) else {

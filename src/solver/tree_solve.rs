@@ -77,7 +77,7 @@
 //! `2¹⁶ / w`, and all products saturate.
 
 use crate::math::{Scalar, Vec2};
-use crate::solver::row::ContactConstraint;
+use crate::solver::row::{ContactConstraint, solve_position_row};
 use crate::solver::tree_plan::{NO_CHILD, TreeRow};
 
 /// A symmetric 2×2 matrix.
@@ -134,6 +134,13 @@ pub(crate) struct TreeScratch<S: Scalar> {
     pub(crate) active: Vec<bool>,
     /// Rows of the current group left out because they depend on others.
     pub(crate) dependent: Vec<usize>,
+    /// Per row: whether it is in `dependent` (so the callers look it up
+    /// in constant time: a pyramid's spanning tree has a dependent row for
+    /// every box that rests on two grounded ones).
+    is_dependent: Vec<bool>,
+    /// Whether each row of the current group is in its tree plan (rows
+    /// off the spanning tree are not: sequential impulses solve them).
+    in_plan: Vec<bool>,
 }
 
 impl<S: Scalar> TreeScratch<S> {
@@ -162,6 +169,8 @@ impl<S: Scalar> TreeScratch<S> {
             self.side_value.resize(rows, S::ZERO);
             self.value.resize(rows, S::ZERO);
             self.active.resize(rows, false);
+            self.in_plan.resize(rows, false);
+            self.is_dependent.resize(rows, false);
         }
     }
 }
@@ -176,6 +185,9 @@ pub(crate) fn solve_tree<S: Scalar>(
     plan: &[TreeRow],
     work: &mut TreeScratch<S>,
 ) {
+    for &r in &work.dependent {
+        work.is_dependent[r] = false;
+    }
     work.dependent.clear();
     // Reset the bodies of the tree: each appears as a parent or a child.
     for t in plan {
@@ -217,6 +229,7 @@ pub(crate) fn solve_tree<S: Scalar>(
         let floor = w_parent.mul(S::from_ratio(1, 65_536)).max(S::EPSILON);
         if d <= floor {
             work.dependent.push(t.row);
+            work.is_dependent[t.row] = true;
             work.free[t.row] = S::ZERO;
             work.gain[t.row] = Vec2::ZERO;
             work.free_side[t.row] = S::ZERO;
@@ -272,6 +285,7 @@ pub(crate) fn solve_tree<S: Scalar>(
         let den = a.mul(one_gc).sub(gb.mul(b));
         if den <= floor {
             work.dependent.push(t.row);
+            work.is_dependent[t.row] = true;
             work.free[t.row] = S::ZERO;
             work.gain[t.row] = Vec2::ZERO;
             work.free_side[t.row] = S::ZERO;
@@ -340,6 +354,16 @@ pub(crate) fn solve_tree<S: Scalar>(
     }
 }
 
+/// Marks which rows of `group` are in `plan` (`work.in_plan`).
+fn mark_plan<S: Scalar>(group: &[usize], plan: &[TreeRow], work: &mut TreeScratch<S>) {
+    for &ri in group {
+        work.in_plan[ri] = false;
+    }
+    for t in plan {
+        work.in_plan[t.row] = true;
+    }
+}
+
 /// The drift of a row's child (zero for a fixed or still other end).
 fn child_drift<S: Scalar>(work: &TreeScratch<S>, t: &TreeRow) -> Vec2<S> {
     if t.child == NO_CHILD {
@@ -393,7 +417,8 @@ const ROUNDS: usize = 4;
 /// One exact velocity solve of a tree group's normal impulses, with the
 /// accumulated impulses kept non-negative (active set), followed by a
 /// sequential-impulse update of the rows the exact solve left out (idle
-/// rows that may have become violated, dependent rows). Friction is the
+/// rows that may have become violated, dependent rows, rows off the
+/// spanning tree of a cyclic group). Friction is the
 /// caller's.
 pub(crate) fn solve_tree_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
@@ -422,6 +447,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     // outlast the rounds, and the bottom links fell freely for a tick
     // (0.73–2.02 % stretch). A touching row that should not hold is
     // released by the first round (its impulse would pull).
+    mark_plan(group, plan, work);
     for &ri in group {
         let row = &rows[ri];
         work.side_stiffness[ri] = side
@@ -429,9 +455,10 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
             .and_then(|sr| sr.stiffness.get(ri).copied())
             .unwrap_or(S::ZERO);
         work.side_value[ri] = S::ZERO;
-        work.active[ri] = row.normal_impulse.is_positive()
-            || row.separation <= slop
-            || !shortfall(row, velocities).is_negative();
+        work.active[ri] = work.in_plan[ri]
+            && (row.normal_impulse.is_positive()
+                || row.separation <= slop
+                || !shortfall(row, velocities).is_negative());
     }
     let mut side = side;
     for _ in 0..ROUNDS {
@@ -485,7 +512,10 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
         // Rows left out that the solution now violates join the next round.
         let mut joined = false;
         for &ri in group {
-            if !work.active[ri] && shortfall(&rows[ri], velocities).is_positive() {
+            if work.in_plan[ri]
+                && !work.active[ri]
+                && shortfall(&rows[ri], velocities).is_positive()
+            {
                 work.active[ri] = true;
                 joined = true;
             }
@@ -496,7 +526,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     }
     for &ri in group {
         let row = &mut rows[ri];
-        let missing = !work.active[ri] || work.dependent.contains(&ri);
+        let missing = !work.active[ri] || work.is_dependent[ri];
         if !missing {
             continue;
         }
@@ -541,9 +571,14 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     // are held where they are, so a correction does not stretch or push
     // into the rows next to it (released if holding would pull); rows
     // apart stay out.
+    mark_plan(group, plan, work);
     let mut any = false;
     for &ri in group {
         let row = &rows[ri];
+        if !work.in_plan[ri] {
+            work.active[ri] = false;
+            continue;
+        }
         let c = correction(row, displacements);
         any |= c.is_negative();
         let separation = row
@@ -554,9 +589,28 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
         work.side_stiffness[ri] = side_stiffness.get(ri).copied().unwrap_or(S::ZERO);
         work.side_value[ri] = S::ZERO;
     }
-    if !any {
-        return;
+    if any {
+        solve_tree_position_rounds(rows, group, plan, displacements, work, correction);
     }
+    // Rows off the spanning tree: sequential position corrections, after
+    // the exact pass (the next iteration's exact pass sees what they moved).
+    for &ri in group {
+        if !work.in_plan[ri] {
+            solve_position_row(&rows[ri], displacements, slop, beta, max_correction);
+        }
+    }
+}
+
+/// The active-set rounds of [`solve_tree_positions`]: `work` holds the
+/// active rows and their corrections on entry.
+fn solve_tree_position_rounds<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    group: &[usize],
+    plan: &[TreeRow],
+    displacements: &mut [Vec2<S>],
+    work: &mut TreeScratch<S>,
+    correction: impl Fn(&ContactConstraint<S>, &[Vec2<S>]) -> S,
+) {
     for _ in 0..ROUNDS {
         solve_tree(rows, plan, work);
         let mut released = false;

@@ -1,7 +1,8 @@
 //! Set-up shared by the integration tests: scene builders (here), edited
 //! files (`file_checksum`), proptest strategies (`fx_strategies`), the
 //! oscillator tests' settings and probes (`oscillators`), raw-bit access to
-//! the fixed-point types for exact reference arithmetic (`raw_fixed`).
+//! the fixed-point types for exact reference arithmetic (`raw_fixed`),
+//! resting scenes of boxes and their measures (`resting`).
 //!
 //! Every float here is a literal or a test-side measurement converted at the
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
@@ -11,6 +12,7 @@ pub mod file_checksum;
 pub mod fx_strategies;
 pub mod oscillators;
 pub mod raw_fixed;
+pub mod resting;
 
 use clockwork2d::prelude::*;
 

@@ -23,12 +23,16 @@ impl<S: Scalar> World<S> {
     pub(super) fn group_and_warm_start(&mut self) {
         let context = &mut self.step_context;
         let slot_count = context.velocities.len();
+        let slop = self.settings.linear_slop;
         context
             .rope_groups
-            .regroup(&context.rope_rows, slot_count, &mut context.parents);
-        context
-            .contact_groups
-            .regroup(&context.constraints, slot_count, &mut context.parents);
+            .regroup(&context.rope_rows, slot_count, slop, &mut context.parents);
+        context.contact_groups.regroup(
+            &context.constraints,
+            slot_count,
+            slop,
+            &mut context.parents,
+        );
         context
             .rope_groups
             .classify(&context.rope_rows, slot_count, true);
