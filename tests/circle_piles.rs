@@ -97,6 +97,12 @@ fn circle_columns_rest_within_n_slop_without_drift_and_sleep() {
         (10, 0.5, true),
         (30, 0.5, true),
         (10, 2.0, true),
+        // Small circles: every circle lies within the 0.1 speculative
+        // margin of several above it (rows that close cycles in the
+        // contact graph); the bound is the same.
+        (30, 0.05, true),
+        (30, 0.02, true),
+        (30, 0.05, false),
     ] {
         column(n, r, walls, 0, 1.0);
     }
