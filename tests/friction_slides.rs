@@ -185,3 +185,47 @@ fn a_stack_on_a_platform_moving_up_or_down_rides_at_its_resting_heights() {
         assert!(worst <= 2.0 * SLOP + ROUND);
     }
 }
+
+#[test]
+fn a_stack_moving_with_its_platform_rides_without_slipping() {
+    // A column spawned moving at the platform's velocity: no relative
+    // motion, so friction has nothing to do and the boxes stay exactly
+    // above the point of the platform they started on, at their resting
+    // heights (n contacts in series: within n·slop).
+    for (vx, n) in [(2.0, 5), (10.0, 10), (-7.0, 10)] {
+        let mut world = World::new(WorldSettings::default());
+        let platform = world
+            .add_body(
+                BodyDef::kinematic(Shape::aabb(vec2(100.0, 0.25)))
+                    .position(vec2(0.0, -0.25))
+                    .velocity(vec2(vx, 0.0)),
+            )
+            .expect("platform");
+        let boxes: Vec<BodyId> = (0..n)
+            .map(|i| {
+                world
+                    .add_body(
+                        BodyDef::dynamic(Shape::aabb(vec2(0.5, 0.5)))
+                            .position(vec2(0.0, 0.5 + i as f64))
+                            .velocity(vec2(vx, 0.0)),
+                    )
+                    .expect("box")
+            })
+            .collect();
+        let (mut slip, mut height) = (false, 0.0f64);
+        for _ in 0..300 {
+            world.step();
+            let px = world.body(platform).unwrap().position().x;
+            for (i, &id) in boxes.iter().enumerate() {
+                let p = world.body(id).unwrap().position();
+                slip |= p.x != px;
+                height = height.max((p.y.to_f64() - 0.5 - i as f64).abs());
+            }
+        }
+        println!(
+            "{n} boxes riding a platform at {vx}: slipped {slip}, worst height error {height:.2e}"
+        );
+        assert!(!slip);
+        assert!(height <= n as f64 * SLOP);
+    }
+}

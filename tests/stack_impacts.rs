@@ -352,3 +352,138 @@ fn elastic_collisions_one_per_step_pass_the_momentum_down_the_row() {
         assert!((v[0] - v1).abs() <= SUM_ROUND && (v[1] - v2).abs() <= SUM_ROUND);
     }
 }
+
+/// Worst overlap of any two of `ids` (unit boxes): both axes must overlap.
+fn worst_box_overlap(world: &World, ids: &[BodyId]) -> f64 {
+    let mut worst = 0.0f64;
+    for (i, &a) in ids.iter().enumerate() {
+        let pa = world.body(a).unwrap().position().to_f64();
+        for &b in &ids[i + 1..] {
+            let pb = world.body(b).unwrap().position().to_f64();
+            worst = worst.max((1.0 - (pa.0 - pb.0).abs()).min(1.0 - (pa.1 - pb.1).abs()));
+        }
+    }
+    worst
+}
+
+#[test]
+fn heavy_bodies_dropped_on_a_stack_do_not_crush_it() {
+    // (boxes, dropped shape is a box, mass, height above its rest, e)
+    for (n, is_box, m, h, e) in [
+        (30, false, 1000.0, 10.0, 0.0),
+        (30, false, 1000.0, 10.0, 0.5),
+        (10, true, 10_000.0, 5.0, 0.0),
+        (10, true, 1000.0, 20.0, 0.0),
+    ] {
+        let mut world = World::new(WorldSettings::default());
+        add_ground(&mut world);
+        let mut bodies = unit_column(&mut world, n);
+        let shape = if is_box {
+            Shape::aabb(vec2(0.5, 0.5))
+        } else {
+            Shape::circle(fx(0.5))
+        };
+        let rest = n as f64 + 0.5;
+        let dropped = world
+            .add_body(
+                BodyDef::dynamic(shape)
+                    .mass(fx(m))
+                    .restitution(fx(e))
+                    .position(vec2(0.0, rest + h)),
+            )
+            .expect("dropped");
+        bodies.push((dropped, rest));
+        let ids: Vec<BodyId> = bodies.iter().map(|&(id, _)| id).collect();
+        // Every contact in the column holds, at every tick, within one
+        // slop (the column's boxes and the dropped body are unit sized,
+        // so a neighbour overlap is 1 minus the centre distance).
+        let mut worst = 0.0f64;
+        for _ in 0..2 * HZ {
+            world.step();
+            worst = worst.max(worst_box_overlap(&world, &ids[..n]));
+            let top = world.body(ids[n - 1]).unwrap().position().y.to_f64();
+            let on = world.body(dropped).unwrap().position().y.to_f64();
+            worst = worst.max(1.0 - (on - top));
+        }
+        let s = settle(&mut world, &bodies, 8 * HZ);
+        println!(
+            "{} of mass {m} dropped {h} (e {e}) on {n} unit boxes: worst overlap {worst:.2e}; then worst sink {:.2e}, x moved {}, asleep from {:?}",
+            if is_box { "box" } else { "ball" },
+            s.sink,
+            s.moved_x,
+            s.asleep_from
+        );
+        assert!(worst <= SLOP);
+        assert!(s.sink <= (n + 1) as f64 * SLOP + ROUND);
+        assert!(!s.moved_x);
+        assert!(s.asleep_from.is_some());
+    }
+}
+
+#[test]
+fn a_ball_hitting_a_stack_from_the_side_never_adds_energy_nor_overlaps_boxes() {
+    // A ball flying level (gravity scale 0) into box `row` of a 10-box
+    // column. Energy: kinetic + gravitational of every body never rises
+    // above its start. Measured from the stored velocities, which are the
+    // integrator's chord velocities: under gravity they differ from the
+    // velocity at the sample by up to g·h/2, so the measured kinetic
+    // energy may exceed the true one by m·|v|·g·h/2 + m·(g·h/2)²/2 per
+    // body; that is the allowance, evaluated at each tick.
+    let g = 10.0;
+    let h = 1.0 / HZ as f64;
+    for (vx, m, row) in [
+        (10.0, 1.0, 0),
+        (10.0, 10.0, 0),
+        (5.0, 1.0, 5),
+        (30.0, 1.0, 9),
+        (20.0, 100.0, 0),
+    ] {
+        let mut world = World::new(WorldSettings::default());
+        add_ground(&mut world);
+        let mut ids: Vec<BodyId> = unit_column(&mut world, 10)
+            .into_iter()
+            .map(|(id, _)| id)
+            .collect();
+        let ball = world
+            .add_body(
+                BodyDef::dynamic(Shape::circle(fx(0.4)))
+                    .mass(fx(m))
+                    .gravity_scale(fx(0.0))
+                    .position(vec2(-3.0, 0.5 + row as f64))
+                    .velocity(vec2(vx, 0.0)),
+            )
+            .expect("ball");
+        ids.push(ball);
+        let energy = |world: &World| {
+            ids.iter().fold((0.0, 0.0), |(e, allowance), &id| {
+                let b = world.body(id).unwrap();
+                let mass = b.mass().to_f64();
+                let (vx, vy) = b.velocity().to_f64();
+                let y = b.position().y.to_f64();
+                let gravity = g * b.gravity_scale().to_f64();
+                let speed = vx.hypot(vy);
+                (
+                    e + 0.5 * mass * speed * speed + mass * gravity * y,
+                    allowance
+                        + mass * speed * gravity * h / 2.0
+                        + mass * (gravity * h / 2.0).powi(2) / 2.0,
+                )
+            })
+        };
+        let (e0, _) = energy(&world);
+        let (mut rise, mut overlap) = (f64::MIN, 0.0f64);
+        for _ in 0..5 * HZ {
+            world.step();
+            let (e, allowance) = energy(&world);
+            rise = rise.max(e - e0 - allowance);
+            overlap = overlap.max(worst_box_overlap(&world, &ids[..10]));
+        }
+        println!(
+            "ball of mass {m} at {vx} into box {row} of 10: energy above start beyond the allowance {rise:.2e} J, worst box overlap {overlap:.2e}; ball ends at {:.3?}, box {row} at {:.3?}",
+            world.body(ball).unwrap().velocity().to_f64(),
+            world.body(ids[row]).unwrap().position().to_f64()
+        );
+        assert!(rise <= SUM_ROUND);
+        assert!(overlap <= SLOP);
+    }
+}
