@@ -189,6 +189,15 @@ fn big_boxes_rest_within_n_slop() {
 }
 
 #[test]
+fn very_tall_stacks_rest_within_n_slop() {
+    // 100, 500 and 1000 unit boxes (the stacks are 30 and 50).
+    let d = WorldSettings::default();
+    for n in [100, 500, 1000] {
+        check("tall", Column::unit(n), d);
+    }
+}
+
+#[test]
 fn small_boxes_rest_within_n_slop() {
     // Half sizes 0.05 and 0.016 at density 1 (masses 0.01 and 1.02e-3,
     // the latter just above the smallest mass accepted, 2⁻¹⁰): each box
