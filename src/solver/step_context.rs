@@ -46,6 +46,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// Each rope row's sideways stiffness for the position passes
     /// (`world::step::solve`).
     pub(crate) rope_side_stiffness: Vec<S>,
+    /// Per rope row: the most one position pass corrects it.
+    pub(crate) rope_correction_cap: Vec<S>,
     /// Each rope row's sideways stiffness for the velocity iterations.
     pub(crate) rope_velocity_side: Vec<S>,
     /// The sideways impulse each rope row received this substep.

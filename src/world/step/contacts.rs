@@ -27,8 +27,10 @@ use crate::world::{World, WorldSettings};
 /// apart, at 60 Hz.
 pub const MAX_BULLET_IMPACTS: u32 = 32;
 
-/// Rounds of [`World::settle_ropes`] (rope lengths, then immovable bodies).
-const ROPE_SETTLE_PASSES: u32 = 4;
+/// The most rounds of [`World::settle_ropes`] (rope lengths, then
+/// immovable bodies) in one substep; rounds stop as soon as every rope is
+/// within the slop.
+const ROPE_SETTLE_MAX_PASSES: u32 = 32;
 
 impl<S: Scalar> World<S> {
     /// Keeps the displacements before the position pass, for
@@ -133,8 +135,10 @@ impl<S: Scalar> World<S> {
     /// The last word on positions when ropes are active: each rope that a
     /// bound correction, a projection out of an immovable body or a rebound
     /// left longer than its length is pulled back (exactly, to the slop, at
-    /// most `max_correction` per pass), then the bodies are projected out
-    /// of immovable ones again; [`ROPE_SETTLE_PASSES`] such rounds.
+    /// most an eighth of its length per pass: `rope_correction_caps` in
+    /// `step/solve.rs`), then the bodies are projected out of immovable
+    /// ones again; rounds until every rope is within the slop, at most
+    /// [`ROPE_SETTLE_MAX_PASSES`].
     ///
     /// Why: the position pass solves ropes and contacts together, but what
     /// comes after it moves bodies without looking at ropes. The bound on
@@ -144,11 +148,18 @@ impl<S: Scalar> World<S> {
     /// out of immovable bodies and the rebound move a body along a contact
     /// normal, which may point away from the anchor. A pull along the rope
     /// cannot fling a crowd (it acts on the rope's two bodies only), so it
-    /// needs no crowd bound; `max_correction` per pass keeps a rope made
-    /// much shorter than its bodies' distance from dragging them across the
-    /// world in one substep (it pulls at up to
-    /// `ROPE_SETTLE_PASSES · max_correction` per substep on top of the
-    /// position pass).
+    /// needs no crowd bound; the cap per pass keeps a rope made much
+    /// shorter than its bodies' distance from dragging them across the
+    /// world in one substep, and the linearised passes from overshooting
+    /// (it pulls at up to `ROPE_SETTLE_MAX_PASSES · ℓ/8`, 4ℓ, per substep
+    /// on top of the position pass: a chain of 0.1 links lying on the
+    /// ground whose anchor is teleported 8 units up is taut again within
+    /// half a second).
+    ///
+    /// Rounds end when every rope is within the slop: most substeps need
+    /// one round (a swinging chain's stretch is of the order of the slop),
+    /// fewer than the four rounds this took before; a rope far too long
+    /// takes more, up to the cap.
     ///
     /// Rope and immovable bodies alternate (projections onto a disc and a
     /// half-plane): when a body on a taut rope is pressed into a fixed body
@@ -156,17 +167,37 @@ impl<S: Scalar> World<S> {
     /// into the surface, and each round shrinks what is left. When no
     /// position honours both (a rope that passes through a fixed body and
     /// is shorter than the way around it: ropes do not wrap), the fixed
-    /// body wins and the rope stays long by the overlap.
+    /// body wins and the rope stays long by the overlap (and the rounds
+    /// run to the cap every substep while it does).
     pub(super) fn settle_ropes(&mut self) {
         if self.step_context.rope_rows.is_empty() {
             return;
         }
+        let slop = self.settings.linear_slop;
+        // The rounds aim 2⁻¹⁰ of the slop inside it (1e-7 at the
+        // defaults) and stop once every rope is within the slop: each
+        // round is a Newton step on rows re-linearised at the current
+        // displacements, so what it leaves beyond its aim is its
+        // second-order residual `δ²/(2ℓ)` for a correction `δ`, below the
+        // margin once `δ` is of the order of the slop, and one round
+        // usually ends them. Below the slop, a round that does not shrink
+        // the worst excess has met the fixed-point floor (a displacement
+        // is an impulse of whole ulps times the inverse mass: 3e-8 for a
+        // link of mass 0.008) and ends them too; above it, the worst
+        // excess may grow for a round while a long rope's correction moves
+        // to its neighbours.
         let settings = WorldSettings {
             position_correction: S::ONE,
+            linear_slop: slop.sub(slop.mul(S::from_ratio(1, 1024))),
             ..self.settings
         };
-        let slop = self.settings.linear_slop;
-        for _ in 0..ROPE_SETTLE_PASSES {
+        let mut previous = S::MAX;
+        for _ in 0..ROPE_SETTLE_MAX_PASSES {
+            let worst = worst_rope_excess(&self.step_context, slop);
+            if !worst.is_positive() || (worst <= slop && worst >= previous) {
+                break;
+            }
+            previous = worst;
             rope_position_pass(&mut self.step_context, &settings);
             let StepContext {
                 constraints,
@@ -278,6 +309,18 @@ impl<S: Scalar> World<S> {
             context.velocities[index] = velocity;
         }
     }
+}
+
+/// The largest excess of an active rope over its length plus the slop,
+/// `|d| − L − slop`, at the current displacements (negative when every
+/// rope is within the slop).
+fn worst_rope_excess<S: Scalar>(context: &StepContext<S>, slop: S) -> S {
+    let mut worst = S::MIN;
+    for (row, &(start_offset, max_length)) in context.rope_rows.iter().zip(&context.rope_geometry) {
+        let moved = context.displacements[row.b as usize] - context.displacements[row.a as usize];
+        worst = worst.max((start_offset + moved).length().sub(max_length).sub(slop));
+    }
+    worst
 }
 
 /// One pass of [`World::project_out_of_immovable`]: every row between a

@@ -111,6 +111,7 @@ impl<S: Scalar> World<S> {
             h,
             &mut context.rope_side_stiffness,
         );
+        rope_correction_caps(&context.rope_geometry, &mut context.rope_correction_cap);
         for _ in 0..settings.position_iterations {
             rope_position_pass(context, settings);
             let StepContext {
@@ -126,11 +127,37 @@ impl<S: Scalar> World<S> {
                 contact_groups,
                 displacements,
                 settings,
-                &[],
+                (&[], &[]),
                 &mut (rope_block, tree),
             );
         }
     }
+}
+
+/// The most one position pass corrects each rope row: an eighth of the
+/// rope's length (and never more than `max_correction`, which the pass
+/// applies as well), into `out`.
+///
+/// Why: a pass is a Newton step on rows linearised at the current
+/// displacements. A rope held at its length by the step (a neighbour of
+/// the rope being shortened) is held only to first order: moving its end
+/// by `δ` across it stretches it by `δ²/(2ℓ)`. A rope far longer than its
+/// length (its anchor teleported, its bodies set apart) asks for a
+/// correction many times `ℓ`; taken in one step, it moved a link of a
+/// 0.1 chain across its neighbours by 0.2 per pass, stretching them 200 %,
+/// and the chain never came back (700–1000 % for 10 s, whipping at
+/// 15 units/s). With `δ ≤ ℓ/8` a neighbour is stretched at most `ℓ/128`
+/// (0.8 %), which the next pass removes: the excess is taken out at up to
+/// `ℓ/8` per pass and rope ([`World::settle_ropes`] takes up to 32 passes
+/// a substep while a rope is still long). Ordinary corrections (a swing's
+/// stretch, of the order of the slop) are far below the cap.
+fn rope_correction_caps<S: Scalar>(geometry: &[(Vec2<S>, S)], out: &mut Vec<S>) {
+    out.clear();
+    out.extend(
+        geometry
+            .iter()
+            .map(|&(_, length)| length.mul(S::from_ratio(1, 8))),
+    );
 }
 
 /// Each rope row's sideways stiffness for the position passes,
@@ -240,6 +267,7 @@ pub(super) fn rope_position_pass<S: Scalar>(
         rope_groups,
         rope_geometry,
         rope_side_stiffness,
+        rope_correction_cap,
         displacements,
         rope_block,
         tree,
@@ -251,7 +279,7 @@ pub(super) fn rope_position_pass<S: Scalar>(
         rope_groups,
         displacements,
         settings,
-        rope_side_stiffness,
+        (rope_side_stiffness, rope_correction_cap),
         &mut (rope_block, tree),
     );
 }
@@ -306,7 +334,7 @@ fn solve_group_list_positions<S: Scalar>(
     groups: &RowGroups,
     displacements: &mut [Vec2<S>],
     settings: &WorldSettings<S>,
-    side_stiffness: &[S],
+    (side_stiffness, row_caps): (&[S], &[S]),
     (block, tree): &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
 ) {
     let (slop, beta, max) = (
@@ -333,6 +361,7 @@ fn solve_group_list_positions<S: Scalar>(
                 beta,
                 max,
                 side_stiffness,
+                row_caps,
                 tree,
             ),
         }
