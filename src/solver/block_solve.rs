@@ -29,15 +29,19 @@ pub(crate) const MAX_BLOCK: usize = 64;
 /// Active-set rounds per solve.
 const ROUNDS: usize = 4;
 
-/// `A_ij` for rows `p` and `q`.
-fn coupling<S: Scalar>(p: &ContactConstraint<S>, q: &ContactConstraint<S>) -> S {
+/// `A_ij` for rows `p` and `q` along directions `dp` and `dq` (each row's
+/// normal, or for a rope's sideways row its normal turned a quarter).
+fn coupling<S: Scalar>(
+    (p, dp): (&ContactConstraint<S>, Vec2<S>),
+    (q, dq): (&ContactConstraint<S>, Vec2<S>),
+) -> S {
     let ends = |c: &ContactConstraint<S>| {
         [
             (c.a, c.inverse_mass_a, true),
             (c.b, c.inverse_mass_b, false),
         ]
     };
-    let cos = p.normal.dot(q.normal);
+    let cos = dp.dot(dq);
     let mut sum = S::ZERO;
     for (sp, wp, neg_p) in ends(p) {
         if !wp.is_positive() {
@@ -117,61 +121,131 @@ fn apply_impulse<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut 
     }
 }
 
-/// Working memory for the block solves.
+/// Working memory of the block solver.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct BlockScratch<S: Scalar> {
     matrix: Vec<S>,
     rhs: Vec<S>,
+    /// The active rows (row indices).
     active: Vec<usize>,
+    /// The rope rows' sideways rows in the solve: `(row index, g)`, after
+    /// the active rows in the system (see [`solve_group_velocities`]).
+    sides: Vec<(usize, S)>,
 }
 
 impl<S: Scalar> BlockScratch<S> {
     /// The one block solve shared by the velocity and position passes:
-    /// builds `A` over the active rows ([`coupling`]) and the right-hand side
-    /// `e_i = rhs(row_i)`, and solves `A x = e` (`x` is left in `self.rhs`,
-    /// in the order of `self.active`). `false` when no row is active
-    /// (nothing built, nothing solved).
+    /// builds `A` over the active rows ([`coupling`]) and their sideways
+    /// rows (direction `perp(n)`, with the compliance `1/g` on the
+    /// diagonal), the right-hand side `e_i = rhs(row_i)` and
+    /// `side_rhs(row, g)`, and solves `A x = e` (`x` is left in
+    /// `self.rhs`, active rows first, then the sideways rows). `false` when
+    /// no row is active (nothing built, nothing solved).
     fn solve_active(
         &mut self,
         rows: &[ContactConstraint<S>],
-        mut rhs: impl FnMut(&ContactConstraint<S>) -> S,
+        mut rhs: impl FnMut(usize) -> S,
+        mut side_rhs: impl FnMut(usize, S) -> S,
     ) -> bool {
-        let m = self.active.len();
-        if m == 0 {
+        let hard = self.active.len();
+        if hard == 0 {
             return false;
         }
+        let m = hard + self.sides.len();
         self.rhs.clear();
+        self.rhs.extend(self.active.iter().map(|&ri| rhs(ri)));
         self.rhs
-            .extend(self.active.iter().map(|&ri| rhs(&rows[ri])));
+            .extend(self.sides.iter().map(|&(ri, g)| side_rhs(ri, g)));
         self.matrix.clear();
         self.matrix.resize(m * m, S::ZERO);
-        for (i, &ri) in self.active.iter().enumerate() {
-            let row = &rows[ri];
-            for (j, &rj) in self.active.iter().enumerate() {
-                self.matrix[i * m + j] = coupling(row, &rows[rj]);
+        let entry = |k: usize| -> (&ContactConstraint<S>, Vec2<S>) {
+            if k < hard {
+                let row = &rows[self.active[k]];
+                (row, row.normal)
+            } else {
+                let row = &rows[self.sides[k - hard].0];
+                (row, row.normal.perp())
             }
+        };
+        for i in 0..m {
+            for j in 0..m {
+                self.matrix[i * m + j] = coupling(entry(i), entry(j));
+            }
+        }
+        for (k, &(_, g)) in self.sides.iter().enumerate() {
+            let d = (hard + k) * (m + 1);
+            self.matrix[d] = self.matrix[d].add(S::ONE.div(g));
         }
         solve_ldlt(&mut self.matrix, &mut self.rhs, m);
         true
+    }
+
+    /// The sideways rows of the active rope rows: those with a sideways
+    /// stiffness `g > 0` in `stiffness` (empty for contacts).
+    fn collect_sides(&mut self, stiffness: &[S]) {
+        self.sides.clear();
+        for &ri in &self.active {
+            if let Some(&g) = stiffness.get(ri)
+                && g.is_positive()
+            {
+                self.sides.push((ri, g));
+            }
+        }
+    }
+}
+
+/// A rope row's sideways impulse `y` along `perp(n)` applied to `target`.
+fn apply_side_impulse<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Vec2<S>]) {
+    let push = row.normal.perp().scale(amount);
+    if row.inverse_mass_a.is_positive() {
+        target[row.a as usize] -= push.scale(row.inverse_mass_a);
+    }
+    if row.inverse_mass_b.is_positive() {
+        target[row.b as usize] += push.scale(row.inverse_mass_b);
     }
 }
 
 /// One exact velocity solve of each group (groups of one, and groups above
 /// [`MAX_BLOCK`], take the sequential-impulse path in the caller).
+///
+/// Rope rows with a sideways stiffness `g` (`side`: `g` per row and the
+/// sideways impulse each has received this substep; `None` for contacts)
+/// add a soft row along `perp(n)` with compliance `1/g` and target
+/// `λ_s = −g·(s·v_rel)` at the end velocities, as in the tree solve
+/// (`solver::tree_solve`, "Ropes: a sideways stiffness on the edge"):
+/// without it a closed loop of light links round a heavy body turned its
+/// ropes explicitly and blew up (a ring of 20 with a 1000× body: 38 000 %).
 pub(crate) fn solve_group_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
     group: &[usize],
     velocities: &mut [Vec2<S>],
+    mut side: Option<(&[S], &mut [S])>,
     work: &mut BlockScratch<S>,
 ) {
     work.active.clear();
     work.active.extend_from_slice(group);
     for _ in 0..ROUNDS {
-        // e_i = target_i − J_i v: the velocity change row i still needs.
-        let solved = work.solve_active(rows, |row| {
-            let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
-            row.target_velocity.sub(vn)
-        });
+        match side.as_ref() {
+            Some((stiffness, _)) => work.collect_sides(stiffness),
+            None => work.sides.clear(),
+        }
+        let accumulated: &[S] = side.as_ref().map_or(&[], |(_, a)| &**a);
+        // e_i = target_i − J_i v: the velocity change row i still needs;
+        // sideways: −s·v_rel − (impulse so far)/g.
+        let solved = work.solve_active(
+            rows,
+            |ri| {
+                let row = &rows[ri];
+                let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
+                row.target_velocity.sub(vn)
+            },
+            |ri, g| {
+                let row = &rows[ri];
+                let v_rel = velocities[row.b as usize] - velocities[row.a as usize];
+                let so_far = accumulated.get(ri).copied().unwrap_or(S::ZERO);
+                v_rel.dot(row.normal.perp()).add(so_far.div(g)).neg()
+            },
+        );
         if !solved {
             return;
         }
@@ -190,6 +264,14 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
                 let row = rows[ri];
                 apply_impulse(&row, x, velocities);
             }
+            let hard = work.active.len();
+            for (k, &(ri, _)) in work.sides.iter().enumerate() {
+                let y = work.rhs[hard + k];
+                if let Some((_, accumulated)) = side.as_mut() {
+                    accumulated[ri] = accumulated[ri].add(y);
+                }
+                apply_side_impulse(&rows[ri], y, velocities);
+            }
             return;
         }
         for &ri in &released {
@@ -203,39 +285,56 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
 }
 
 /// One exact position-correction solve of a group: stretched rows (beyond
-/// the slop) are pulled back by the fraction `beta`, at most `max_correction`.
+/// the slop) are pulled back by the fraction `beta`, at most `max_correction`
+/// (and at most the row's entry in `row_caps`, where it has one); rope rows
+/// with a sideways stiffness in `side_stiffness` resist turning, as in the
+/// tree solve.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_group_positions<S: Scalar>(
     rows: &[ContactConstraint<S>],
     group: &[usize],
     displacements: &mut [Vec2<S>],
-    slop: S,
-    beta: S,
-    max_correction: S,
+    (slop, beta, max_correction): (S, S, S),
+    side_stiffness: &[S],
+    row_caps: &[S],
     work: &mut BlockScratch<S>,
 ) {
-    let correction_of = |row: &ContactConstraint<S>, d: &[Vec2<S>]| {
+    let correction_of = |ri: usize, d: &[Vec2<S>]| {
+        let row = &rows[ri];
+        let cap = row_caps
+            .get(ri)
+            .map_or(max_correction, |&c| c.min(max_correction));
         let separation = row
             .separation
             .add((d[row.b as usize] - d[row.a as usize]).dot(row.normal));
-        beta.mul(separation.add(slop))
-            .clamp(max_correction.neg(), S::ZERO)
+        beta.mul(separation.add(slop)).clamp(cap.neg(), S::ZERO)
     };
     work.active.clear();
     work.active.extend(
         group
             .iter()
             .copied()
-            .filter(|&ri| correction_of(&rows[ri], displacements).is_negative()),
+            .filter(|&ri| correction_of(ri, displacements).is_negative()),
     );
     for _ in 0..ROUNDS {
-        // e_i = −correction_i: the stretch row i must take back.
-        let solved = work.solve_active(rows, |row| correction_of(row, displacements).neg());
+        work.collect_sides(side_stiffness);
+        // e_i = −correction_i: the stretch row i must take back; the
+        // sideways rows hold what they have (right-hand side 0).
+        let solved = work.solve_active(
+            rows,
+            |ri| correction_of(ri, displacements).neg(),
+            |_, _| S::ZERO,
+        );
         if !solved {
             return;
         }
-        if work.rhs.iter().all(|x| !x.is_negative()) {
+        let hard = work.active.len();
+        if work.rhs[..hard].iter().all(|x| !x.is_negative()) {
             for (i, &ri) in work.active.iter().enumerate() {
                 apply_impulse(&rows[ri], work.rhs[i], displacements);
+            }
+            for (k, &(ri, _)) in work.sides.iter().enumerate() {
+                apply_side_impulse(&rows[ri], work.rhs[hard + k], displacements);
             }
             return;
         }

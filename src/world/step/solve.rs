@@ -305,7 +305,10 @@ fn solve_group_list_velocities<S: Scalar>(
                 }
                 continue;
             }
-            GroupSolve::Block => solve_group_velocities(rows, group, velocities, block),
+            GroupSolve::Block => {
+                let side = side.as_mut().map(|sr| (sr.stiffness, &mut *sr.accumulated));
+                solve_group_velocities(rows, group, velocities, side, block);
+            }
             GroupSolve::Tree(range) => {
                 let side = side.as_mut().map(|sr| SideRows {
                     stiffness: sr.stiffness,
@@ -350,7 +353,15 @@ fn solve_group_list_positions<S: Scalar>(
                 }
             }
             GroupSolve::Block => {
-                solve_group_positions(rows, group, displacements, slop, beta, max, block);
+                solve_group_positions(
+                    rows,
+                    group,
+                    displacements,
+                    (slop, beta, max),
+                    side_stiffness,
+                    row_caps,
+                    block,
+                );
             }
             GroupSolve::Tree(range) => solve_tree_positions(
                 rows,
