@@ -714,3 +714,57 @@ fn queries_never_mutate_and_sort_as_documented() {
     assert_eq!(world.tick(), tick);
     assert_eq!(world.events(), &events[..], "a query changed the events");
 }
+
+/// The refusal messages state the ranges the checks apply (issue 13: the
+/// mass message said "between 1e-6 and 1e9" while masses outside
+/// [2⁻¹⁰, 2²⁰] were refused, so a user making 0.01-sized boxes at density
+/// 1 was told a range that admits them). Each bound is probed from both
+/// sides, one fixed-point step (2⁻³²) apart, by mass and by density, and
+/// the message must name the bound values.
+#[test]
+fn range_errors_state_the_ranges_that_are_checked() {
+    let step = |v: Fx, by: i64| Fx::from_bits(v.to_bits() + by);
+    let lo = fx(1.0 / 1024.0);
+    let hi = fx(1048576.0);
+    let add = |mass: Fx| {
+        let mut world = World::new(WorldSettings::default());
+        world.add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).mass(mass))
+    };
+    assert!(add(lo).is_ok(), "the lower bound itself is allowed");
+    assert!(add(hi).is_ok(), "the upper bound itself is allowed");
+    for mass in [step(lo, -1), step(hi, 1)] {
+        assert_eq!(add(mass), Err(WorldError::MassOutOfRange), "mass {mass}");
+    }
+    // By density: a box of half size 0.01 at density 1 has mass 4e-4.
+    let mut world = World::new(WorldSettings::default());
+    let err = world
+        .add_body(BodyDef::dynamic(Shape::aabb(vec2(0.01, 0.01))))
+        .unwrap_err();
+    assert_eq!(err, WorldError::MassOutOfRange);
+    let message = err.to_string();
+    println!("{message}");
+    assert!(
+        message.contains("1/1024") && message.contains("1048576"),
+        "the message names the bounds: {message}"
+    );
+    assert!(
+        !message.contains("1e-6") && !message.contains("1e9"),
+        "{message}"
+    );
+    // Speed: the check is per component; the message says so.
+    let max = WorldSettings::<Fx>::default().max_speed;
+    let mut world = World::new(WorldSettings::default());
+    assert!(
+        world
+            .add_body(BodyDef::dynamic(Shape::circle(fx(0.5))).velocity(Vec2::new(max, max)))
+            .is_ok(),
+        "both components at max_speed are allowed (speed √2·max_speed)"
+    );
+    let err = world
+        .add_body(
+            BodyDef::dynamic(Shape::circle(fx(0.5))).velocity(Vec2::new(step(max, 1), Fx::ZERO)),
+        )
+        .unwrap_err();
+    assert_eq!(err, WorldError::SpeedTooLarge);
+    assert!(err.to_string().contains("each component"), "{err}");
+}

@@ -11,7 +11,7 @@
 use crate::dynamics::{Body, BodyId, BodyKind, NO_ISLAND};
 use crate::geometry::Shape;
 use crate::math::{Scalar, Vec2, WORLD_LIMIT};
-use crate::world::{MAX_SHAPE_SIZE, World};
+use crate::world::{MAX_MASS, MAX_SHAPE_SIZE, MIN_MASS_RECIPROCAL, World};
 use core::fmt;
 
 /// The world described by a file breaks an invariant of the engine: the
@@ -111,7 +111,8 @@ impl<S: Scalar> World<S> {
                 return bad(id, "shape size must be in (0, 4096]");
             }
             if b.kind == BodyKind::Dynamic {
-                if b.mass < S::from_ratio(1, 1024) || b.mass > S::from_int(1 << 20) {
+                if b.mass < S::from_ratio(1, MIN_MASS_RECIPROCAL) || b.mass > S::from_int(MAX_MASS)
+                {
                     return bad(id, "mass must be in [1/1024, 2^20]");
                 }
                 // Exactly what `add_body` computes, so the solver sees the

@@ -8,6 +8,13 @@ use crate::math::{Scalar, Vec2};
 /// Largest radius or half extent accepted (units). Keeps every shape's
 /// bounding box, and the sums of two, far inside the number range.
 pub(crate) const MAX_SHAPE_SIZE: i32 = 4096;
+/// A dynamic body's mass is at least `1 / MIN_MASS_RECIPROCAL` = 2⁻¹⁰ (its
+/// inverse then keeps at least 12 significant bits in I32F32: 2⁻²⁰ / 2⁻³²)
+/// and at most [`MAX_MASS`] = 2²⁰ (mass × speed stays in range). The error
+/// message ([`WorldError::MassOutOfRange`]) states the same range.
+pub(crate) const MIN_MASS_RECIPROCAL: i32 = 1 << 10;
+/// See [`MIN_MASS_RECIPROCAL`].
+pub(crate) const MAX_MASS: i32 = 1 << 20;
 /// Largest number of slots (2³¹): ids stay far from `u32` overflow.
 const MAX_SLOTS: usize = 1 << 31;
 
@@ -119,10 +126,8 @@ impl<S: Scalar> World<S> {
                 MassSpec::Density(density) => density.mul(def.shape.area()),
                 MassSpec::Mass(mass) => mass,
             };
-            // Mass in [2^-10, 2^20]: the inverse then has at least 12
-            // significant bits in I32F32 (2^-20 / 2^-32), and mass × speed
-            // stays in range.
-            if mass < S::from_ratio(1, 1024) || mass > S::from_int(1 << 20) {
+            // Mass in [2^-10, 2^20] (see `MIN_MASS_RECIPROCAL`).
+            if mass < S::from_ratio(1, MIN_MASS_RECIPROCAL) || mass > S::from_int(MAX_MASS) {
                 return Err(WorldError::MassOutOfRange);
             }
             (mass, S::ONE.div(mass))

@@ -15,8 +15,9 @@ pub enum WorldError {
     ShapeTooLarge,
     /// A density or mass that is zero or negative.
     NonPositiveMass,
-    /// A mass so small that its inverse overflows, or so large it cannot be
-    /// stored.
+    /// A dynamic body's mass (density × area, or the mass given) outside
+    /// [2⁻¹⁰, 2²⁰] = [1/1024, 1 048 576]: below, its inverse keeps too few
+    /// bits; above, mass × speed leaves the number range.
     MassOutOfRange,
     /// Restitution outside [0, 1], friction or gravity scale outside their
     /// ranges.
@@ -26,7 +27,8 @@ pub enum WorldError {
     },
     /// A position outside the world bounds.
     OutOfBounds,
-    /// A velocity or impulse whose resulting speed exceeds `max_speed`.
+    /// A velocity (given, or resulting from an impulse) with a component
+    /// above `max_speed` in magnitude (the check is per axis).
     SpeedTooLarge,
     /// An id that names no live body (never issued, or removed since).
     UnknownBody(BodyId),
@@ -69,7 +71,7 @@ impl fmt::Display for WorldError {
             WorldError::NonPositiveMass => write!(f, "density and mass must be positive"),
             WorldError::MassOutOfRange => write!(
                 f,
-                "mass out of range: it must be between 1e-6 and 1e9 (after density × area)"
+                "mass out of range: a dynamic body's mass (density × area, or the mass given) must be between 1/1024 (2^-10, about 0.000977) and 1048576 (2^20)"
             ),
             WorldError::MaterialOutOfRange { field } => write!(
                 f,
@@ -77,7 +79,10 @@ impl fmt::Display for WorldError {
             ),
             WorldError::OutOfBounds => write!(f, "position outside the world bounds"),
             WorldError::SpeedTooLarge => {
-                write!(f, "speed above the world's max_speed setting")
+                write!(
+                    f,
+                    "velocity too large: each component (|vx|, |vy|) must be at most the world's max_speed setting"
+                )
             }
             WorldError::UnknownBody(id) => {
                 write!(f, "{id} does not exist (never created, or removed)")

@@ -24,7 +24,7 @@ pub use query_index::QueryIndex;
 pub use settings::{MAX_ITERATIONS, MAX_SUBSTEPS, WorldSettings};
 pub use step::contacts::MAX_BULLET_IMPACTS;
 
-pub(crate) use bodies::MAX_SHAPE_SIZE;
+pub(crate) use bodies::{MAX_MASS, MAX_SHAPE_SIZE, MIN_MASS_RECIPROCAL};
 
 use crate::collision::CachedContact;
 use crate::constraints::ConstraintSlot;
