@@ -300,8 +300,17 @@ fn solve_group_list_velocities<S: Scalar>(
     for (group, solve, _) in groups.iter_classified() {
         match solve {
             GroupSolve::Sequential => {
-                for &ri in group {
-                    solve_velocity_row(&mut rows[ri], velocities);
+                match contiguous(group) {
+                    Some(run) => {
+                        for row in &mut rows[run] {
+                            solve_velocity_row(row, velocities);
+                        }
+                    }
+                    None => {
+                        for &ri in group {
+                            solve_velocity_row(&mut rows[ri], velocities);
+                        }
+                    }
                 }
                 continue;
             }
@@ -331,6 +340,16 @@ fn solve_group_list_velocities<S: Scalar>(
     }
 }
 
+/// The rows of `group` (ascending row indices, no repeats) as one range
+/// when they are consecutive: a pile that is one group holds every row, and
+/// a sweep then walks the rows in place instead of through the index list
+/// (the same rows in the same order, without an index load, bounds check
+/// and address computation per row).
+fn contiguous(group: &[usize]) -> Option<core::ops::Range<usize>> {
+    let (&first, &last) = (group.first()?, group.last()?);
+    (last - first + 1 == group.len()).then_some(first..last + 1)
+}
+
 /// One position pass over grouped rows (same split as the velocities).
 fn solve_group_list_positions<S: Scalar>(
     rows: &[ContactConstraint<S>],
@@ -347,11 +366,18 @@ fn solve_group_list_positions<S: Scalar>(
     );
     for (group, _, solve) in groups.iter_classified() {
         match solve {
-            GroupSolve::Sequential => {
-                for &ri in group {
-                    solve_position_row(&rows[ri], displacements, slop, beta, max);
+            GroupSolve::Sequential => match contiguous(group) {
+                Some(run) => {
+                    for row in &rows[run] {
+                        solve_position_row(row, displacements, slop, beta, max);
+                    }
                 }
-            }
+                None => {
+                    for &ri in group {
+                        solve_position_row(&rows[ri], displacements, slop, beta, max);
+                    }
+                }
+            },
             GroupSolve::Block => {
                 solve_group_positions(
                     rows,
