@@ -36,6 +36,11 @@ const TICKS: u64 = if cfg!(debug_assertions) {
     10 * HZ
 };
 
+/// Fixed-point rounding allowed past `n · slop`: positions are multiples
+/// of 2⁻³² (2.3e-10) and a contact resting at the edge of the slop is
+/// judged on that grid, so a box may sit a few steps past its bound (one
+/// was seen); four steps.
+const ROUND: f64 = 1e-9;
 /// Relative f64 rounding allowed on the energy sum.
 const ENERGY_ROUNDING: f64 = 1e-12;
 
@@ -53,7 +58,7 @@ fn print(name: &str, r: &RestingRun) {
 fn assert_rests(name: &str, r: &RestingRun, max_drift: f64, asleep_by: u64) {
     print(name, r);
     assert!(
-        r.worst_excess <= 0.0,
+        r.worst_excess <= ROUND,
         "{name}: a box left its n·slop band by {}",
         r.worst_excess
     );

@@ -1,5 +1,6 @@
 //! Collision: broad phase, narrow-phase dispatch and the contact cache.
 
+mod box_corner;
 mod broad_phase;
 mod coincident;
 mod contact_cache;

@@ -8,6 +8,7 @@ use crate::geometry::{
 use crate::math::{Scalar, Vec2};
 
 use super::CachedContact;
+use super::box_corner::{box_contact, corner_apart, corner_impact};
 use super::coincident::coincident_contact;
 use crate::dynamics::{Body, BodyKind};
 use crate::solver::restitution::BounceCandidate;
@@ -196,10 +197,24 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             {
                 continue;
             }
+            let is_box_pair = matches!(
+                (body_a.shape, body_b.shape),
+                (Shape::Aabb { .. }, Shape::Aabb { .. })
+            );
             // Same centre: the geometry has no normal; take the pair's own
             // spread direction (see `collision::coincident`).
             let mut contact = if body_a.position == body_b.position {
                 coincident_contact(a, &body_a.shape, b, &body_b.shape)
+            } else if let (Shape::Aabb { half_extents: ha }, Shape::Aabb { half_extents: hb }) =
+                (body_a.shape, body_b.shape)
+            {
+                // Boxes: a corner touch does not carry weight.
+                box_contact(
+                    &Aabb::new(body_a.position, ha),
+                    &Aabb::new(body_b.position, hb),
+                    gravity,
+                    linear_slop,
+                )
             } else {
                 contact_between(
                     &body_a.shape,
@@ -209,6 +224,20 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                 )
             };
             let (va, vb) = (velocities[a as usize], velocities[b as usize]);
+            if is_box_pair
+                && corner_apart(
+                    &Aabb::new(body_a.position, body_a.shape.half_extents()),
+                    &Aabb::new(body_b.position, body_b.shape.half_extents()),
+                    (vb - va).scale(h),
+                    &contact,
+                    gravity,
+                    linear_slop,
+                )
+            {
+                // A corner over a corner carries no weight
+                // (`collision::box_corner`).
+                continue;
+            }
             let mut vn = (vb - va).dot(contact.normal);
             // Keep the contact if the gap can close within this substep
             // (plus the margin): s ≤ margin + max(0, -v_n)·h.
@@ -235,6 +264,22 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                     vb.scale(h),
                 ) {
                     Toi::Miss => continue,
+                    Toi::Hit { t, normal }
+                        if is_box_pair
+                            && corner_impact(
+                                &Aabb::new(body_a.position, body_a.shape.half_extents()),
+                                &Aabb::new(body_b.position, body_b.shape.half_extents()),
+                                (vb - va).scale(h),
+                                t,
+                                normal,
+                                gravity,
+                                linear_slop,
+                            ) =>
+                    {
+                        // A corner meeting along the weight axis carries no
+                        // weight (`collision::box_corner`).
+                        continue;
+                    }
                     Toi::Hit { t, normal } => {
                         vn = (vb - va).dot(normal);
                         contact.normal = normal;

@@ -105,7 +105,7 @@ pub fn run_resting(
     judge_from: u64,
 ) -> RestingRun {
     let slop = settings.linear_slop.to_f64();
-    let g = settings.gravity.y.to_f64();
+    let (gx, gy) = settings.gravity.to_f64();
     let mut world: World = World::new(settings);
     add_ground(&mut world);
     let ids: Vec<BodyId> = boxes
@@ -123,15 +123,15 @@ pub fn run_resting(
         .iter()
         .map(|&id| world.body(id).unwrap().mass().to_f64())
         .collect();
-    // Potential energy −m·g·y with g the (negative) gravity y component.
+    // Potential energy −m·(g·p).
     let energy = |world: &World| -> f64 {
         ids.iter()
             .zip(&masses)
             .map(|(&id, &m)| {
                 let body = world.body(id).unwrap();
-                let y = body.position().y.to_f64();
+                let (x, y) = body.position().to_f64();
                 let (vx, vy) = body.velocity().to_f64();
-                0.5 * m * (vx * vx + vy * vy) - m * g * y
+                0.5 * m * (vx * vx + vy * vy) - m * (gx * x + gy * y)
             })
             .sum()
     };

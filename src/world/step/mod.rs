@@ -98,7 +98,7 @@ impl<S: Scalar> World<S> {
             }
         }
         self.build_rope_rows(h, inverse_h);
-        self.group_and_warm_start();
+        self.group_and_warm_start(h);
         self.solve_velocities(h);
         self.integrate(h);
         self.remember_displacements();

@@ -19,26 +19,43 @@ use crate::world::WorldSettings;
 
 impl<S: Scalar> World<S> {
     /// Rows grouped by shared bodies (chains, piles) and how each group is
-    /// solved, then the warm start: last substep's impulses applied again.
-    pub(super) fn group_and_warm_start(&mut self) {
+    /// solved (`h`: the substep), then the warm start: last substep's
+    /// impulses applied again.
+    pub(super) fn group_and_warm_start(&mut self, h: S) {
         let context = &mut self.step_context;
         let slot_count = context.velocities.len();
-        let slop = self.settings.linear_slop;
-        context
-            .rope_groups
-            .regroup(&context.rope_rows, slot_count, slop, &mut context.parents);
+        let (slop, gravity) = (self.settings.linear_slop, self.settings.gravity);
+        context.rope_groups.regroup(
+            &context.rope_rows,
+            slot_count,
+            slop,
+            gravity,
+            &mut context.parents,
+        );
         context.contact_groups.regroup(
             &context.constraints,
             slot_count,
             slop,
+            gravity,
             &mut context.parents,
         );
-        context
-            .rope_groups
-            .classify(&context.rope_rows, slot_count, true);
-        context
-            .contact_groups
-            .classify(&context.constraints, slot_count, false);
+        // One substep of gravity: what resting bodies' velocities differ by
+        // at most (L∞ norm of g times h).
+        let rest_speed = gravity.x.abs().max(gravity.y.abs()).mul(h);
+        context.rope_groups.classify(
+            &context.rope_rows,
+            slot_count,
+            true,
+            &context.velocities,
+            rest_speed,
+        );
+        context.contact_groups.classify(
+            &context.constraints,
+            slot_count,
+            false,
+            &context.velocities,
+            rest_speed,
+        );
         let row_count = context.rope_rows.len().max(context.constraints.len());
         context.tree.reserve(slot_count, row_count);
         warm_start(&context.rope_rows, &mut context.velocities);
