@@ -6,6 +6,7 @@
 //! ("Why springs are solved together").
 
 use super::spring::theta_for;
+use super::spring_support::SupportScratch;
 use crate::math::{Scalar, Vec2};
 
 /// Most sweeps of one spring solve. A resolved lattice (ω·h ≤ 0.3)
@@ -137,6 +138,8 @@ pub(crate) struct SpringScratch<S: Scalar> {
     /// Each slot's position velocity `p = v₀ + θ_b·Δv`: the velocity its
     /// position follows this substep.
     pub(crate) position_velocities: Vec<Vec2<S>>,
+    /// The contact rows the sweeps carry (`spring_support.rs`).
+    pub(crate) supports: SupportScratch<S>,
     /// The last spring's blends (springs of a lattice mostly share them).
     last_blend: Option<BlendCache<S>>,
 }
@@ -295,6 +298,7 @@ fn start_from_free_impulses<S: Scalar>(
 pub(crate) fn solve_spring_rows<S: Scalar>(
     rows: &mut [SpringRow<S>],
     radial: &mut [RadialRow<S>],
+    supports: &mut SupportScratch<S>,
     (velocities, position_velocities): (&[Vec2<S>], &mut [Vec2<S>]),
     h: S,
 ) -> usize {
@@ -311,6 +315,11 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
         } else {
             sweep_rows::<S, true>(rows, radial, position_velocities, h)
         };
+        let largest_change = if supports.rows.is_empty() {
+            largest_change
+        } else {
+            largest_change.max(supports.sweep(position_velocities))
+        };
         if sweep == 1 {
             let largest_impulse = rows.iter().fold(S::ZERO, |m, row| {
                 m.max(row.impulse.x.abs()).max(row.impulse.y.abs())
@@ -318,9 +327,11 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
             threshold = largest_impulse.mul(S::from_ratio(1, 512));
         }
         if largest_change <= threshold {
+            supports.take_back(position_velocities);
             return sweep;
         }
     }
+    supports.take_back(position_velocities);
     MAX_SPRING_SWEEPS
 }
 
@@ -461,7 +472,15 @@ mod tests {
             );
             finish_all(&mut scratch);
             let mut p = vec![Vec2::new(v, 0.0), Vec2::ZERO];
-            assert!(solve_spring_rows(&mut scratch.rows, &mut [], (&p.clone(), &mut p), h) <= 2);
+            assert!(
+                solve_spring_rows(
+                    &mut scratch.rows,
+                    &mut [],
+                    &mut SupportScratch::default(),
+                    (&p.clone(), &mut p),
+                    h
+                ) <= 2
+            );
             let theta = scratch.body_theta[0];
             x += h * p[0].x;
             v += (p[0].x - v) / theta;
@@ -504,7 +523,13 @@ mod tests {
         assert_eq!(theta, scratch.body_theta[1]);
         let (t1, t2) = (theta_for(k, 1.0, h), theta_for(k, 2.0, h));
         let mut p = vec![Vec2::new(v0, 0.0), Vec2::new(v1, 0.0), Vec2::ZERO];
-        solve_spring_rows(&mut scratch.rows, &mut [], (&p.clone(), &mut p), h);
+        solve_spring_rows(
+            &mut scratch.rows,
+            &mut [],
+            &mut SupportScratch::default(),
+            (&p.clone(), &mut p),
+            h,
+        );
         // λ_s = −h·k·(x_s + θ_s·h·ṽ_s) with ṽ_1 = v0 + θ·(λ1 − λ2),
         // ṽ_2 = (v1 − v0) + θ·(2·λ2 − λ1) (unit masses):
         // [1 + g1·θ, −g1·θ; −g2·θ, 1 + 2·g2·θ]·λ = −h·k·[x1 + θ1·h·v0; x2 + θ2·h·(v1 − v0)],

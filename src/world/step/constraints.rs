@@ -5,7 +5,8 @@
 //! body) with zero velocity and zero inverse mass, so rope rows share the
 //! contact solver's indexing without special cases.
 
-use crate::constraints::spring_solve::{RadialRow, solve_spring_rows};
+use crate::constraints::spring_solve::{RadialRow, SpringScratch, solve_spring_rows};
+use crate::constraints::spring_support::SupportRow;
 use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::{ContactConstraint, effective_mass};
@@ -137,12 +138,32 @@ impl<S: Scalar> World<S> {
                 Constraint::Rope { .. } => continue,
             }
         }
+        if any {
+            self.gather_supports(&mut scratch);
+        }
         let context = &mut self.step_context;
         context.spring_dv.clear();
         context.spring_dv.resize(n + 1, Vec2::ZERO);
         if !any {
             self.step_context.springs = scratch;
             return;
+        }
+        // A body in contact follows the contact solver's position rule:
+        // θ_b = 1 (see `constraints`, "Springs and contacts"). Only pairs
+        // touching now: a pair merely within the speculative margin
+        // (neighbours of a folding lattice) mostly takes no impulse, and
+        // θ_b = 1 would damp its springs by ½·m·|Δv|² per step for
+        // nothing.
+        let contacted = &mut scratch.supports.contacted;
+        contacted.clear();
+        contacted.resize(n + 1, false);
+        for contact in scratch.supports.rows.iter().filter(|c| c.touching) {
+            for slot in [contact.a, contact.b] {
+                if let Some(theta) = scratch.body_theta.get_mut(slot as usize) {
+                    *theta = S::ONE;
+                    contacted[slot as usize] = true;
+                }
+            }
         }
         // A radial spring pushes along the pole through the points where
         // the θ-method evaluates its ends, r + (1 − θ_b)·Δq_b −
@@ -159,7 +180,20 @@ impl<S: Scalar> World<S> {
                 scratch.body_theta[row.b as usize],
             );
             geometry.lag = (S::ONE.sub(t_a).mul(h), S::ONE.sub(t_b).mul(h));
-            // w_a + w_b > 0 (checked when the row was built).
+            // A contacted end is mostly held (a spring standing on the
+            // ground): it does not move, its lag does not matter, and the
+            // pole's scale must be the free end's, ℓ = θ_b·l + (1 − θ_b)·l'
+            // (with u = r + (1 − θ_b)·Δr, then u·Δr/ℓ = l' − l exactly at
+            // θ_b = ½; weighing the held end in made a radial pair on the
+            // ground gain 8 %). So contacted ends drop out of the weight
+            // unless both are contacted.
+            let contacted = &scratch.supports.contacted;
+            let (w_a, w_b) = match (contacted[row.a as usize], contacted[row.b as usize]) {
+                (true, false) if w_b.is_positive() => (S::ZERO, w_b),
+                (false, true) if w_a.is_positive() => (w_a, S::ZERO),
+                _ => (w_a, w_b),
+            };
+            // w_a + w_b > 0 (checked when the row was built, kept above).
             geometry.length_weight = t_a.mul(w_a).add(t_b.mul(w_b)).div(w_a.add(w_b));
         }
         let mut last_inverse = None;
@@ -177,6 +211,7 @@ impl<S: Scalar> World<S> {
         solve_spring_rows(
             &mut scratch.rows,
             &mut scratch.radial,
+            &mut scratch.supports,
             (&context.velocities, &mut scratch.position_velocities),
             h,
         );
@@ -200,6 +235,86 @@ impl<S: Scalar> World<S> {
             context.spring_dv[i] = v - p;
         }
         context.springs = scratch;
+    }
+
+    /// The substep's contact rows that reach a spring-moved body through
+    /// contacts (breadth first over dynamic bodies; an immovable body ends
+    /// a path), as support rows of the spring sweeps (`spring_support.rs`).
+    fn gather_supports(&self, scratch: &mut SpringScratch<S>) {
+        let context = &self.step_context;
+        let supports = &mut scratch.supports;
+        let slots = context.velocities.len();
+        supports.rows.clear();
+        supports.pushed.clear();
+        supports.pushed.resize(slots, Vec2::ZERO);
+        supports.reached.clear();
+        supports.reached.resize(slots, false);
+        let contacts = &context.constraints;
+        let slop = self.settings.linear_slop;
+        if contacts.is_empty() {
+            return;
+        }
+        let moving = |slot: u32| {
+            context
+                .inverse_masses
+                .get(slot as usize)
+                .is_some_and(|w| w.is_positive())
+        };
+        let mut frontier: Vec<u32> = Vec::new();
+        for row in &scratch.rows {
+            for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
+                if w.is_positive() && !supports.reached[slot as usize] {
+                    supports.reached[slot as usize] = true;
+                    frontier.push(slot);
+                }
+            }
+        }
+        // Each slot's contact rows (compressed sparse rows): counts, then
+        // offsets, then the row indices.
+        let mut start = vec![0u32; slots + 1];
+        for c in contacts {
+            start[c.a as usize + 1] += 1;
+            start[c.b as usize + 1] += 1;
+        }
+        for i in 0..slots {
+            start[i + 1] += start[i];
+        }
+        let mut fill = start.clone();
+        let mut incident = vec![0u32; start[slots] as usize];
+        for (index, c) in contacts.iter().enumerate() {
+            for slot in [c.a, c.b] {
+                incident[fill[slot as usize] as usize] = index as u32;
+                fill[slot as usize] += 1;
+            }
+        }
+        let mut taken = vec![false; contacts.len()];
+        while let Some(slot) = frontier.pop() {
+            let range = start[slot as usize] as usize..start[slot as usize + 1] as usize;
+            for &index in &incident[range] {
+                if core::mem::replace(&mut taken[index as usize], true) {
+                    continue;
+                }
+                let c = &contacts[index as usize];
+                let other = if c.a == slot { c.b } else { c.a };
+                if moving(other) && !supports.reached[other as usize] {
+                    supports.reached[other as usize] = true;
+                    frontier.push(other);
+                }
+            }
+        }
+        // In contact-row order (deterministic, whatever the search order).
+        for (c, _) in contacts.iter().zip(&taken).filter(|(_, t)| **t) {
+            supports.rows.push(SupportRow {
+                a: c.a,
+                b: c.b,
+                normal: c.normal,
+                target: c.target_velocity,
+                effective_mass: c.effective_mass,
+                push: (c.push_a, c.push_b),
+                impulse: S::ZERO,
+                touching: c.separation <= slop,
+            });
+        }
     }
 
     /// Rope rows for this substep: a rope is active when it is taut or can

@@ -86,7 +86,6 @@ impl<S: Scalar> World<S> {
         // Each pass wakes at least one island, so this ends.
         loop {
             self.load_step_context(h);
-            self.apply_springs(h);
             self.build_proxies(h);
             self.find_pairs();
             let to_wake = self.build_constraints(h, inverse_h);
@@ -97,6 +96,7 @@ impl<S: Scalar> World<S> {
                 self.wake_index(index);
             }
         }
+        self.apply_springs(h);
         self.build_rope_rows(h, inverse_h);
         self.group_and_warm_start(h);
         self.solve_velocities(h);
