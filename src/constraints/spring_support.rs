@@ -58,6 +58,14 @@ pub(crate) struct SupportScratch<S: Scalar> {
     pub(crate) reached: Vec<bool>,
     /// Per slot: an end of a support row (its blend is θ = 1).
     pub(crate) contacted: Vec<bool>,
+    /// The search's buffers (kept to step without allocating): each
+    /// slot's first incident contact row, the fill cursors, the incident
+    /// rows, the rows taken and the slots still to visit.
+    pub(crate) start: Vec<u32>,
+    pub(crate) fill: Vec<u32>,
+    pub(crate) incident: Vec<u32>,
+    pub(crate) taken: Vec<bool>,
+    pub(crate) frontier: Vec<u32>,
 }
 
 impl<S: Scalar> SupportScratch<S> {

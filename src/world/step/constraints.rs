@@ -6,7 +6,7 @@
 //! contact solver's indexing without special cases.
 
 use crate::constraints::spring_solve::{RadialRow, SpringScratch, solve_spring_rows};
-use crate::constraints::spring_support::SupportRow;
+use crate::constraints::spring_support::{SupportRow, SupportScratch};
 use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::{ContactConstraint, effective_mass};
@@ -260,18 +260,29 @@ impl<S: Scalar> World<S> {
                 .get(slot as usize)
                 .is_some_and(|w| w.is_positive())
         };
-        let mut frontier: Vec<u32> = Vec::new();
+        let SupportScratch {
+            ref mut rows,
+            ref mut reached,
+            ref mut start,
+            ref mut fill,
+            ref mut incident,
+            ref mut taken,
+            ref mut frontier,
+            ..
+        } = *supports;
+        frontier.clear();
         for row in &scratch.rows {
             for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
-                if w.is_positive() && !supports.reached[slot as usize] {
-                    supports.reached[slot as usize] = true;
+                if w.is_positive() && !reached[slot as usize] {
+                    reached[slot as usize] = true;
                     frontier.push(slot);
                 }
             }
         }
         // Each slot's contact rows (compressed sparse rows): counts, then
         // offsets, then the row indices.
-        let mut start = vec![0u32; slots + 1];
+        start.clear();
+        start.resize(slots + 1, 0);
         for c in contacts {
             start[c.a as usize + 1] += 1;
             start[c.b as usize + 1] += 1;
@@ -279,15 +290,18 @@ impl<S: Scalar> World<S> {
         for i in 0..slots {
             start[i + 1] += start[i];
         }
-        let mut fill = start.clone();
-        let mut incident = vec![0u32; start[slots] as usize];
+        fill.clear();
+        fill.extend_from_slice(start.as_slice());
+        incident.clear();
+        incident.resize(start[slots] as usize, 0);
         for (index, c) in contacts.iter().enumerate() {
             for slot in [c.a, c.b] {
                 incident[fill[slot as usize] as usize] = index as u32;
                 fill[slot as usize] += 1;
             }
         }
-        let mut taken = vec![false; contacts.len()];
+        taken.clear();
+        taken.resize(contacts.len(), false);
         while let Some(slot) = frontier.pop() {
             let range = start[slot as usize] as usize..start[slot as usize + 1] as usize;
             for &index in &incident[range] {
@@ -296,15 +310,15 @@ impl<S: Scalar> World<S> {
                 }
                 let c = &contacts[index as usize];
                 let other = if c.a == slot { c.b } else { c.a };
-                if moving(other) && !supports.reached[other as usize] {
-                    supports.reached[other as usize] = true;
+                if moving(other) && !reached[other as usize] {
+                    reached[other as usize] = true;
                     frontier.push(other);
                 }
             }
         }
         // In contact-row order (deterministic, whatever the search order).
-        for (c, _) in contacts.iter().zip(&taken).filter(|(_, t)| **t) {
-            supports.rows.push(SupportRow {
+        for (c, _) in contacts.iter().zip(taken.iter()).filter(|(_, t)| **t) {
+            rows.push(SupportRow {
                 a: c.a,
                 b: c.b,
                 normal: c.normal,
