@@ -19,6 +19,16 @@
 //!    hit is at distance 0 and its point is the origin — but it is a hit
 //!    from outside, with the surface's normal, not the "origin inside"
 //!    convention (normal = −direction).
+//! 3. `circle_grazing_a_box_corner_into_the_face_region_hits` (a CI run's
+//!    finding, and an engine bug): a box of half extents (1 ulp, 1) at
+//!    (2⁻⁸, 1) and a circle of radius 2⁻⁸ at (−1 ulp, −1 ulp), touching
+//!    the box's bottom-left corner at the circle's tangent point, moving
+//!    by (1, 32768) relative to the box: almost along the box's left face,
+//!    slowly into it. The rounded-box cast called the corner circle a miss
+//!    (a grazing line, within its few ulps of rounding) and answered
+//!    `Miss`, though the segment then runs 2 units up the face region,
+//!    `2/32768 = 6.1e-5` deep. The cast now checks a corner miss against
+//!    the two flat slabs of the rounded box.
 //!
 //! # Bounds used (from `src/geometry/toi.rs` and `fuzz/src/geometry_check.rs`)
 //! At a TOI hit the shapes are within `B = (2.5|d| + 4)` ulps of touching
@@ -26,7 +36,9 @@
 //! minus the centre over `R`, so each component and the length are within
 //! `2(B + 2 ulps)/R + 8 ulps` of the true unit normal.
 
-use clockwork2d::geometry::{Circle, Ray, Toi, ray_circle, toi_circle_circle};
+use clockwork2d::geometry::{
+    Aabb, Circle, Ray, Toi, ray_circle, toi_circle_aabb, toi_circle_circle,
+};
 use clockwork2d::prelude::*;
 
 const ULP: f64 = 1.0 / 4_294_967_296.0;
@@ -109,4 +121,142 @@ fn ray_from_half_an_ulp_outside_hits_at_zero_with_the_surface_normal() {
         (hit.distance, hit.point, hit.normal),
         (Fx::ZERO, inside.origin, -inside.direction)
     );
+}
+
+/// Signed distance (f64) from a point relative to a box's centre to the box
+/// of half extents `(hx, hy)` grown by `r` (the Minkowski shape of a circle
+/// of radius `r` against the box): negative inside.
+fn rounded_box_sdf(qx: f64, qy: f64, hx: f64, hy: f64, r: f64) -> f64 {
+    let (ox, oy) = (qx.abs() - hx, qy.abs() - hy);
+    ox.max(0.0).hypot(oy.max(0.0)) + ox.max(oy).min(0.0) - r
+}
+
+/// Minimum of a convex function on [0, 1] (golden-section search; 200
+/// steps shrink the interval far below f64's resolution).
+fn convex_min(f: impl Fn(f64) -> f64) -> f64 {
+    let (mut lo, mut hi) = (0.0f64, 1.0f64);
+    let g = 0.618_033_988_749_895;
+    for _ in 0..200 {
+        let (m1, m2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+        if f(m1) <= f(m2) {
+            hi = m2;
+        } else {
+            lo = m1;
+        }
+    }
+    f(lo).min(f(hi)).min(f(0.0)).min(f(1.0))
+}
+
+#[test]
+fn circle_grazing_a_box_corner_into_the_face_region_hits() {
+    // The physics: the circle's centre moves along a straight line relative
+    // to the box, so its distance to the box, phi(t) = sdf(rounded box),
+    // is convex in t. The TOI must not answer Miss when min phi < -B, and
+    // at a Hit phi(t) must be within B of zero with no earlier overlap
+    // beyond B, B = (2.5|d| + 4) ulps (src/geometry/toi.rs). Near a tangent
+    // point the normal is the face's within sqrt(6u/r) + 2B/r (the circle
+    // cast keeps a missed segment at least r - 3u from the corner; see
+    // src/geometry/segment_cast/rounded_aabb.rs), plus 8 ulps of rounding.
+    //
+    // Variants: the fuzz input, every mirror (4 corners, both faces by
+    // swapping the axes), radii from 2 ulps to 100, the start one ulp
+    // below, on or beside the tangent point, slopes from 1/32768 to 1/64,
+    // displacements from 1 to 32768.
+    let mut checked = 0;
+    for radius_bits in [2i64, 1 << 12, 1 << 24, 1 << 31, 1 << 32, 100 << 32] {
+        for (length_bits, slope_bits) in [
+            (32_768i64 << 32, 1i64 << 32),
+            (32_768 << 32, 1 << 20),
+            (1_000 << 32, 1 << 32),
+            (16 << 32, 1 << 26),
+            (1 << 32, 1 << 20),
+        ] {
+            for start_offset in [-1i64, 0, 1] {
+                for mirror in 0..8 {
+                    checked += 1;
+                    check_corner_graze(radius_bits, length_bits, slope_bits, start_offset, mirror);
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 6 * 5 * 3 * 8);
+}
+
+/// One variant: the box of half extents (1 ulp, 1) with its bottom-left
+/// corner at the origin; the circle of radius `r` centred on the corner
+/// circle's left tangent point (−r, 0) shifted down by `start_offset` ulps;
+/// relative motion (`slope`, `length`) (into the left face region).
+/// `mirror` bit 0 flips x, bit 1 flips y, bit 2 swaps the axes.
+fn check_corner_graze(
+    radius_bits: i64,
+    length_bits: i64,
+    slope_bits: i64,
+    start_offset: i64,
+    mirror: u32,
+) {
+    let place = |x: i64, y: i64| {
+        let x = if mirror & 1 == 1 { -x } else { x };
+        let y = if mirror & 2 == 2 { -y } else { y };
+        if mirror & 4 == 4 { (y, x) } else { (x, y) }
+    };
+    let vec = |(x, y): (i64, i64)| Vec2::new(raw(x), raw(y));
+    let half_bits = place(1, 1 << 32);
+    let half_bits = (half_bits.0.abs(), half_bits.1.abs());
+    let box_center = place(1, 1 << 32);
+    let circle_center = place(-radius_bits, -start_offset);
+    let motion = place(slope_bits, length_bits);
+    let target = Aabb::new(vec(box_center), vec(half_bits));
+    let circle = Circle::new(vec(circle_center), raw(radius_bits));
+    // Only the circle moves: the TOI depends on the relative motion.
+    let toi = toi_circle_aabb(&circle, vec(motion), &target, Vec2::ZERO);
+
+    let f = |v: i64| v as f64 * ULP;
+    let r = f(radius_bits);
+    let (hx, hy) = (f(half_bits.0), f(half_bits.1));
+    let (qx0, qy0) = (
+        f(circle_center.0 - box_center.0),
+        f(circle_center.1 - box_center.1),
+    );
+    let (dx, dy) = (f(motion.0), f(motion.1));
+    let phi = |t: f64| rounded_box_sdf(qx0 + t * dx, qy0 + t * dy, hx, hy, r);
+    let d = dx.hypot(dy);
+    let bound = (2.5 * d + 4.0) * ULP + 64.0 * f64::EPSILON * (d + 2.0);
+    let name = format!(
+        "r {r}, length {}, slope {}, start {start_offset}, mirror {mirror}",
+        f(length_bits),
+        f(slope_bits)
+    );
+    match toi {
+        Toi::Overlapping => assert!(
+            phi(0.0) <= bound,
+            "{name}: overlapping, phi(0) {}",
+            phi(0.0)
+        ),
+        Toi::Miss => {
+            let closest = convex_min(phi);
+            assert!(
+                closest >= -bound,
+                "{name}: a miss, but the circle goes {closest} into the box"
+            );
+        }
+        Toi::Hit { t, normal } => {
+            let t = t.to_f64();
+            assert!(phi(t).abs() <= bound, "{name}: phi(t = {t}) = {}", phi(t));
+            let earlier = convex_min(|s| phi(s * t));
+            assert!(earlier >= -bound, "{name}: {earlier} deep before t = {t}");
+            // The true normal at the contact: the face's (the contact is
+            // at the tangent point, in the face's direction from the box).
+            let (fx_, fy_) = place(-1, 0);
+            let tol = (6.0 * ULP / r).sqrt() + 2.0 * bound / r + 8.0 * ULP;
+            let (nx, ny) = (normal.x.to_f64(), normal.y.to_f64());
+            // The contact normal points from the circle to the box: minus
+            // the outward face normal.
+            assert!(
+                (nx + fx_ as f64).abs() <= tol && (ny + fy_ as f64).abs() <= tol,
+                "{name}: normal ({nx}, {ny}) vs ({}, {}) beyond {tol}",
+                -fx_,
+                -fy_
+            );
+        }
+    }
 }

@@ -27,6 +27,18 @@ use crate::math::{Scalar, Vec2};
 ///
 ///    If the origin itself is inside the grown box but outside the rounded
 ///    box, it is in a corner square, and step 3 applies from there.
+/// 4. The inner sides of a corner square touch the corner circle only at
+///    its two tangent points `(h.x + r, h.y)` and `(h.x, h.y + r)`. A
+///    segment through (or an ulp beside) a tangent point, running almost
+///    along the face beyond it, grazes the circle: in exact arithmetic it
+///    touches it, but the circle cast's rounding (a few ulps, see
+///    `circle.rs`) may call it a miss, and the segment then runs on inside
+///    the face region, `s_max·|dir_face|` deep by its end (a fuzzed TOI went
+///    6e-5 into a box this way). So a corner miss is checked against the
+///    two flat slabs whose union with the four circles is the rounded box,
+///    the box grown by `r` on x only and on y only, with the exact box
+///    cast: the first entry of either is the answer (they cannot contain
+///    the origin: step 1 is exact and would have said inside).
 ///
 /// At the face/corner boundary both answers agree (the circle's normal
 /// there is the face normal), so classifying a point one ulp off that
@@ -64,10 +76,15 @@ pub(crate) fn cast_rounded_box<S: Scalar>(
             },
         )
     };
+    // Step 3, with step 4 when the corner's circle is missed.
+    let corner_or_faces = |corner: Vec2<S>| match cast_circle(origin, dir, s_max, corner, radius) {
+        Cast::Miss => cast_face_slabs(origin, dir, s_max, center, half, radius),
+        found => found,
+    };
     let hit = match cast_box(origin, dir, s_max, center, grown) {
         Cast::Miss => return Cast::Miss,
         // Inside the grown box but not the rounded box: in a corner square.
-        Cast::Inside => return cast_circle(origin, dir, s_max, corner_near(origin), radius),
+        Cast::Inside => return corner_or_faces(corner_near(origin)),
         Cast::Hit { s, point, normal } => (s, point, normal),
     };
     let (_, point, normal) = hit;
@@ -85,5 +102,56 @@ pub(crate) fn cast_rounded_box<S: Scalar>(
             normal,
         };
     }
-    cast_circle(origin, dir, s_max, corner_near(point), radius)
+    corner_or_faces(corner_near(point))
+}
+
+/// The first entry of the segment into the two flat slabs of the rounded
+/// box: the box grown by `radius` along x only and along y only (step 4 of
+/// [`cast_rounded_box`]). Both casts are exact in their decisions; the
+/// earlier entry wins (on a tie, the y slab, the module's tie rule).
+fn cast_face_slabs<S: Scalar>(
+    origin: Vec2<S>,
+    dir: Vec2<S>,
+    s_max: S,
+    center: Vec2<S>,
+    half: Vec2<S>,
+    radius: S,
+) -> Cast<S> {
+    // The slab's flat-face normal on the entry point's side.
+    let with_face_normal = |found: Cast<S>, on_x: bool| match found {
+        Cast::Hit { s, point, .. } => {
+            let rel = point - center;
+            let side = |v: S| {
+                if v.is_negative() {
+                    S::ONE.neg()
+                } else {
+                    S::ONE
+                }
+            };
+            let normal = if on_x {
+                Vec2::new(side(rel.x), S::ZERO)
+            } else {
+                Vec2::new(S::ZERO, side(rel.y))
+            };
+            Cast::Hit { s, point, normal }
+        }
+        other => other,
+    };
+    let x_slab = Vec2::new(half.x.add(radius), half.y);
+    let y_slab = Vec2::new(half.x, half.y.add(radius));
+    let along_x = with_face_normal(cast_box(origin, dir, s_max, center, x_slab), true);
+    let along_y = with_face_normal(cast_box(origin, dir, s_max, center, y_slab), false);
+    match (along_x, along_y) {
+        // Not reached when the origin is outside the rounded box (step 1
+        // is exact); kept consistent rather than unreachable.
+        (Cast::Inside, _) | (_, Cast::Inside) => Cast::Inside,
+        (Cast::Miss, other) | (other, Cast::Miss) => other,
+        (Cast::Hit { s: sx, .. }, Cast::Hit { s: sy, .. }) => {
+            if sx < sy {
+                along_x
+            } else {
+                along_y
+            }
+        }
+    }
 }
