@@ -4,11 +4,11 @@
 # (default 60) starting from the committed seeds in fuzz/seeds/<target>/.
 # Any crash, panic, timeout or out-of-memory fails the step.
 #
-# `-seed=1`: libFuzzer's mutations are then a fixed sequence (given the
-# binary and the seeds), so a run tries the same inputs on every machine,
-# a slower machine a prefix of them: the step cannot flake on an input
-# that a longer local run (`FUZZ_SECONDS=600 bash fuzz/ci.sh`) has not
-# tried. Time per input is bounded by the targets' budgets (see
+# `-seed=1` fixes libFuzzer's random seed, but runs still diverge (the
+# corpus is read in directory order, and two runs of one binary on one
+# machine differ within 65 536 inputs), so a CI run may try inputs no local
+# run did: fuzz longer locally before landing (README.md, "A long
+# session"). Time per input is bounded by the targets' budgets (see
 # README.md), far below `-timeout=30` even on a loaded machine.
 #
 # `--sanitizer none`: CI has only a stable toolchain, and AddressSanitizer
