@@ -32,10 +32,10 @@ const SEED: u64 = 2024;
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0xa8debe5369f84f95),
-    ("pyramid", 0x7d71806744226675),
+    ("pyramid", 0x8a01af2c009a7a43),
     ("balls", 0xd06cf6ae7aa1ab5b),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0xfa88308c7234de05),
+    ("mixed", 0x7d8f49e565e0b6df),
 ];
 // END GOLDEN
 

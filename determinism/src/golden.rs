@@ -36,8 +36,8 @@ pub const GOLDEN: &[GoldenScenario] = &[
             (360, 0x758213cf9c770bf2, 0xce71d7c1b2940351),
             (420, 0x0f548ec7dc413bc5, 0x0336b3fb6ca57621),
             (480, 0x7f216b5e61102bad, 0xec7d7c3e46346e59),
-            (540, 0xaea9600c6f6a16c0, 0x5fae46b2f4d89823),
-            (600, 0x5a6bb714db3c3f98, 0x2db18a0369571f33),
+            (540, 0x42d87cac8786f9cd, 0x5fae46b2f4d89823),
+            (600, 0xfe7997b20a7d34c5, 0x2db18a0369571f33),
         ],
     },
     GoldenScenario {

@@ -604,6 +604,19 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     }
     if any {
         solve_tree_position_rounds(rows, group, plan, displacements, slop, work, correction);
+        // Rows the exact pass left out as dependent (their pivot vanished:
+        // two boxes spawned at one point on the ground, the pair's row
+        // vertical and both boxes held by the ground's rows) take a
+        // sequential correction, as the velocity solve's missing rows do;
+        // left alone, nothing ever pushed such a pair apart (issue 13).
+        for &ri in group {
+            if work.in_plan[ri] && work.is_dependent[ri] {
+                let cap = row_caps
+                    .get(ri)
+                    .map_or(max_correction, |&c| c.min(max_correction));
+                solve_position_row(&rows[ri], displacements, slop, beta, cap);
+            }
+        }
     }
     // Rows off the spanning tree: sequential position corrections, after
     // the exact pass (the next iteration's exact pass sees what they moved).
