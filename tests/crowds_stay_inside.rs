@@ -96,6 +96,9 @@ fn filled_room(
     (world, bodies)
 }
 
+/// A room: centre, wall thickness, g, every tenth body heavy, seed.
+type Room = ((f64, f64), f64, f64, bool, u64);
+
 /// How far any body reaches past the room's inner faces (negative: inside).
 fn worst_reach(world: &World, bodies: &[BodyId], centre: (f64, f64)) -> f64 {
     bodies
@@ -114,8 +117,7 @@ fn worst_reach(world: &World, bodies: &[BodyId], centre: (f64, f64)) -> f64 {
 
 #[test]
 fn no_body_is_squeezed_out_of_a_closed_room() {
-    // (room centre, wall thickness, g, every tenth body heavy, seed)
-    let rooms: [((f64, f64), f64, f64, bool, u64); 6] = [
+    let rooms: [Room; 6] = [
         ((0.0, 0.0), 0.1, 10.0, false, 1),
         ((0.0, 0.0), 0.1, 100.0, false, 2),
         ((0.0, 0.0), 0.02, 10.0, false, 4),
