@@ -35,7 +35,7 @@ const GOLDEN: &[(&str, u64)] = &[
     ("pyramid", 0x8a01af2c009a7a43),
     ("balls", 0xd06cf6ae7aa1ab5b),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0x7d8f49e565e0b6df),
+    ("mixed", 0x171b2257aa28de15),
 ];
 // END GOLDEN
 

@@ -7,6 +7,7 @@ use core::ops::Range;
 use crate::dynamics::islands;
 use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::MAX_BLOCK;
+use crate::solver::forest_cover::{ForestCover, MAX_TREES};
 use crate::solver::row::ContactConstraint;
 use crate::solver::tree_plan::{TreePlanner, TreeRow, plan_tree};
 
@@ -20,6 +21,12 @@ pub(crate) enum GroupSolve {
     /// The exact tree solve, with the plan at this range of
     /// [`RowGroups::plan`].
     Tree(Range<usize>),
+    /// The exact tree solve on each of several spanning trees that
+    /// together cover the group's rows ([`crate::solver::forest_cover`]),
+    /// one after another: the plans at these ranges of
+    /// [`RowGroups::plan`], listed at this range of
+    /// [`RowGroups::trees`].
+    Trees(Range<usize>),
 }
 
 /// Groups of row indices, each sorted ascending, in the order of their first
@@ -36,6 +43,11 @@ pub(crate) struct RowGroups {
     modes: Vec<(GroupSolve, GroupSolve)>,
     /// The elimination plans of the tree groups, one after another.
     plans: Vec<TreeRow>,
+    /// The plan ranges of the [`GroupSolve::Trees`] groups.
+    trees: Vec<Range<usize>>,
+    /// The covering of cyclic groups by spanning trees, and the rows it
+    /// leaves uncovered.
+    cover: ForestCover,
     /// Working memory of the tree planner.
     planner: TreePlanner,
     /// Group of each row while grouping (working memory).
@@ -59,6 +71,9 @@ pub(crate) struct RowGroups {
     off_tree: Vec<bool>,
     /// Per row: its [`tier`] while grouping (working memory).
     row_tier: Vec<u8>,
+    /// Per row: how its normal lies against gravity ([`rise`]), which the
+    /// covering's first tree reads ([`ForestCover::first_tree`]).
+    row_rise: Vec<u8>,
 }
 
 impl RowGroups {
@@ -111,6 +126,11 @@ impl RowGroups {
         };
         self.row_tier
             .extend(rows.iter().map(|row| tier(row, slop, across_gravity)));
+        self.row_rise.clear();
+        self.row_rise.extend(
+            rows.iter()
+                .map(|row| rise(row.normal, gravity, across_gravity(row.normal))),
+        );
         // Join the two ends of every row that are both dynamic (the same
         // union as `islands::union`, lower root kept), tier by tier. A row
         // whose ends are already joined closes a cycle: it is off the
@@ -224,11 +244,15 @@ impl RowGroups {
     ///   converge in a sweep or two and skip the planning.
     /// * A group with a cycle among such rows and uneven masses (or ropes):
     ///   the dense block solver up to [`MAX_BLOCK`] rows; above, the exact
-    ///   solve on its spanning tree ([`RowGroups::regroup`] picks it along
-    ///   the load paths) with the rows off it by sequential impulses in the
-    ///   same sweep (a block Gauss–Seidel: a pyramid of heavy boxes on
-    ///   light ones, which sequential impulses alone leave sagging 0.4 and
-    ///   awake, rests within the slop).
+    ///   solve on each of a few spanning trees that together hold every
+    ///   row ([`crate::solver::forest_cover`]; the first picked along the
+    ///   load paths by [`RowGroups::regroup`]), one after another in every
+    ///   sweep: each row is then solved exactly together with the load
+    ///   path below it. One tree with the rows off it by sequential
+    ///   impulses let a heavy top row sink through an 8-row pile of light
+    ///   balls (×100: 3.4) and balls leave a closed box; a pyramid of heavy
+    ///   boxes on light ones, which sequential impulses alone leave sagging
+    ///   0.4 and awake, rests within the slop either way.
     /// * A cyclic group of even masses that rests (a pyramid, a brick wall,
     ///   a wall of equal boxes: its touching rows join it, it touches a
     ///   body of infinite mass, and no two of its bodies approach or part
@@ -261,10 +285,14 @@ impl RowGroups {
     ) {
         self.modes.clear();
         self.plans.clear();
-        for ((w, &cyclic), &support) in self.starts.windows(2).zip(&self.cyclic).zip(&self.support)
-        {
-            let supported = support == TOUCHING_EDGE | GROUNDED;
-            let group = &self.rows[w[0]..w[1]];
+        self.trees.clear();
+        self.cover.reset(rows.len(), slot_count);
+        // The groups' row lists, out of `self` while the planners borrow it.
+        let grouped = core::mem::take(&mut self.rows);
+        for g in 0..self.cyclic.len() {
+            let cyclic = self.cyclic[g];
+            let supported = self.support[g] == TOUCHING_EDGE | GROUNDED;
+            let group = &grouped[self.starts[g]..self.starts[g + 1]];
             let position = if group.len() < 2 {
                 GroupSolve::Sequential
             } else {
@@ -277,7 +305,12 @@ impl RowGroups {
                     && supported
                     && group.len() <= CYCLIC_TREE_ROWS
                     && resting(rows, group, velocities, rest_speed);
-                if wanted
+                // Contacts only: rope loops keep their one spanning tree
+                // (the rope solves carry sideways rows the covering was
+                // not measured with).
+                if cyclic && direct && !block && !always_direct {
+                    self.plan_trees(rows, group, slot_count)
+                } else if wanted
                     && (!cyclic || direct || affordable)
                     && !block
                     && plan_tree(
@@ -307,6 +340,7 @@ impl RowGroups {
             };
             self.modes.push((velocity, position));
         }
+        self.rows = grouped;
     }
 
     /// The groups with their decisions from the last
@@ -324,6 +358,63 @@ impl RowGroups {
     pub(crate) fn plan(&self, range: &Range<usize>) -> &[TreeRow] {
         &self.plans[range.clone()]
     }
+
+    /// The plan ranges of a [`GroupSolve::Trees`] range.
+    pub(crate) fn trees(&self, range: &Range<usize>) -> &[Range<usize>] {
+        &self.trees[range.clone()]
+    }
+
+    /// Per row: whether it is in none of its group's trees (rows of a
+    /// [`GroupSolve::Trees`] group left to sequential impulses).
+    pub(crate) fn uncovered(&self) -> &[bool] {
+        &self.cover.uncovered
+    }
+
+    /// Plans the spanning trees covering a cyclic `group`
+    /// ([`crate::solver::forest_cover`]): first the one picked along the
+    /// load paths, then up to [`MAX_TREES`] in all while rows remain
+    /// uncovered. Sequential impulses if not even the first is a tree.
+    fn plan_trees<S: Scalar>(
+        &mut self,
+        rows: &[ContactConstraint<S>],
+        group: &[usize],
+        slot_count: usize,
+    ) -> GroupSolve {
+        let first = self.trees.len();
+        let start = self.plans.len();
+        self.cover
+            .first_tree(rows, group, &self.row_tier, &self.row_rise);
+        if !plan_tree(
+            rows,
+            group,
+            &self.cover.off,
+            slot_count,
+            &mut self.planner,
+            &mut self.plans,
+        ) {
+            return GroupSolve::Sequential;
+        }
+        self.trees.push(start..self.plans.len());
+        self.cover.start(group);
+        while self.trees.len() - first < MAX_TREES && self.cover.any_uncovered(group) {
+            if self.cover.next_tree(rows, group) == 0 {
+                break;
+            }
+            let start = self.plans.len();
+            if !plan_tree(
+                rows,
+                group,
+                &self.cover.off,
+                slot_count,
+                &mut self.planner,
+                &mut self.plans,
+            ) {
+                break;
+            }
+            self.trees.push(start..self.plans.len());
+        }
+        GroupSolve::Trees(first..self.trees.len())
+    }
 }
 
 /// Largest resting cyclic group of even masses given the spanning-tree
@@ -333,11 +424,11 @@ impl RowGroups {
 const CYCLIC_TREE_ROWS: usize = 4096;
 
 /// Tiers in which [`RowGroups::regroup`] takes the rows.
-const TIERS: u8 = 4;
+pub(crate) const TIERS: u8 = 4;
 /// The tier of the rows apart.
-const APART_TIER: u8 = 3;
+pub(crate) const APART_TIER: u8 = 3;
 /// The tier of a row with a body of infinite mass (never joins two).
-const NO_TIER: u8 = u8::MAX;
+pub(crate) const NO_TIER: u8 = u8::MAX;
 
 /// The tier in which [`RowGroups::regroup`] takes a row: 0 carrying
 /// impulse, 1 touching within `slop` along a normal that can carry weight
@@ -361,6 +452,34 @@ fn tier<S: Scalar>(
     } else {
         1
     }
+}
+
+/// [`rise`]: the row's `b` end is the upper one (the normal, from `a` to
+/// `b`, points against gravity); otherwise `a` is, unless [`ACROSS`].
+pub(crate) const RISE_B: u8 = 1;
+/// [`rise`]: the normal is across gravity (`n·g = 0`: side by side), or
+/// there is no gravity; neither end holds the other up.
+pub(crate) const ACROSS: u8 = 2;
+/// [`rise`]: the normal is neither along nor across gravity (a ball on two
+/// balls below: its supports push their bodies apart sideways).
+pub(crate) const OBLIQUE: u8 = 4;
+
+/// How a row's normal `n` lies against `gravity`: [`RISE_B`], [`ACROSS`]
+/// and [`OBLIQUE`] flags (`across` is `n·g = 0`, computed by the caller).
+/// Read off one component when gravity lies along an axis (no product).
+#[inline]
+fn rise<S: Scalar>(n: Vec2<S>, gravity: Vec2<S>, across: bool) -> u8 {
+    if across || gravity == Vec2::new(S::ZERO, S::ZERO) {
+        return ACROSS;
+    }
+    let (along, up_b) = if gravity.x == S::ZERO {
+        (n.x == S::ZERO, (n.y > S::ZERO) == (gravity.y < S::ZERO))
+    } else if gravity.y == S::ZERO {
+        (n.y == S::ZERO, (n.x > S::ZERO) == (gravity.x < S::ZERO))
+    } else {
+        (n.cross(gravity) == S::ZERO, n.dot(gravity).is_negative())
+    };
+    (if up_b { RISE_B } else { 0 }) | if along { 0 } else { OBLIQUE }
 }
 
 /// A cycle closed by a row carrying impulse or touching.

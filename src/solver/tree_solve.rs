@@ -420,6 +420,11 @@ const ROUNDS: usize = 4;
 /// rows that may have become violated, dependent rows, rows off the
 /// spanning tree of a cyclic group). Friction is the
 /// caller's.
+///
+/// `off_plan`: which rows of the group that are not in `plan` take the
+/// sequential update (`None`: all of them; a group covered by several
+/// trees passes the rows in none, [`crate::solver::forest_cover`]).
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_tree_velocities<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
     group: &[usize],
@@ -427,6 +432,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     velocities: &mut [Vec2<S>],
     slop: S,
     side: Option<SideRows<'_, S>>,
+    off_plan: Option<&[bool]>,
     work: &mut TreeScratch<S>,
 ) {
     let shortfall = |row: &ContactConstraint<S>, v: &[Vec2<S>]| {
@@ -526,7 +532,11 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     }
     for &ri in group {
         let row = &mut rows[ri];
-        let missing = !work.active[ri] || work.is_dependent[ri];
+        let missing = if work.in_plan[ri] {
+            !work.active[ri] || work.is_dependent[ri]
+        } else {
+            off_plan.is_none_or(|rest| rest[ri])
+        };
         if !missing {
             continue;
         }
@@ -544,7 +554,9 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
 /// penetrated (or stretched) beyond the slop is corrected by the fraction
 /// `beta` of its excess, at most `max_correction` (and at most its entry
 /// in `row_caps`, where it has one), all at once; rows that would have to
-/// pull are released and the rest re-solved.
+/// pull are released and the rest re-solved. Rows not in `plan` take
+/// sequential corrections after it, those marked in `off_plan` when given
+/// (as in [`solve_tree_velocities`]).
 ///
 /// Rows left out (apart) that the applied correction pushes in or
 /// stretches beyond the slop join a further round, which holds the rows
@@ -564,6 +576,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     max_correction: S,
     side_stiffness: &[S],
     row_caps: &[S],
+    off_plan: Option<&[bool]>,
     work: &mut TreeScratch<S>,
 ) {
     // The correction each row asks for (≤ 0), from the current separation.
@@ -603,7 +616,19 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
         work.side_value[ri] = S::ZERO;
     }
     if any {
-        solve_tree_position_rounds(rows, group, plan, displacements, slop, work, correction);
+        // A group covered by several trees (`off_plan` given) lets no row
+        // join a further round: the next tree's exact pass, in the same
+        // sweep, corrects what this one pushed in.
+        let join = off_plan.is_none();
+        solve_tree_position_rounds(
+            rows,
+            group,
+            plan,
+            displacements,
+            (slop, join),
+            work,
+            correction,
+        );
         // Rows the exact pass left out as dependent (their pivot vanished:
         // two boxes spawned at one point on the ground, the pair's row
         // vertical and both boxes held by the ground's rows) take a
@@ -621,7 +646,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     // Rows off the spanning tree: sequential position corrections, after
     // the exact pass (the next iteration's exact pass sees what they moved).
     for &ri in group {
-        if !work.in_plan[ri] {
+        if !work.in_plan[ri] && off_plan.is_none_or(|rest| rest[ri]) {
             let cap = row_caps
                 .get(ri)
                 .map_or(max_correction, |&c| c.min(max_correction));
@@ -637,7 +662,7 @@ fn solve_tree_position_rounds<S: Scalar>(
     group: &[usize],
     plan: &[TreeRow],
     displacements: &mut [Vec2<S>],
-    slop: S,
+    (slop, join): (S, bool),
     work: &mut TreeScratch<S>,
     correction: impl Fn(usize, &[Vec2<S>]) -> S,
 ) {
@@ -662,7 +687,8 @@ fn solve_tree_position_rounds<S: Scalar>(
             // held where they are now (their fraction beta is taken).
             let mut joined = false;
             for &ri in group {
-                if work.in_plan[ri]
+                if join
+                    && work.in_plan[ri]
                     && !work.active[ri]
                     && correction(ri, displacements).is_negative()
                 {

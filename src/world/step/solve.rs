@@ -347,8 +347,27 @@ fn solve_group_list_velocities<S: Scalar>(
                     velocities,
                     slop,
                     side,
+                    None,
                     tree,
                 );
+            }
+            GroupSolve::Trees(range) => {
+                for plan in groups.trees(range) {
+                    let side = side.as_mut().map(|sr| SideRows {
+                        stiffness: sr.stiffness,
+                        accumulated: &mut *sr.accumulated,
+                    });
+                    solve_tree_velocities(
+                        rows,
+                        group,
+                        groups.plan(plan),
+                        velocities,
+                        slop,
+                        side,
+                        Some(groups.uncovered()),
+                        tree,
+                    );
+                }
             }
         }
         for &ri in group {
@@ -416,8 +435,31 @@ fn solve_group_list_positions<S: Scalar>(
                 max,
                 side_stiffness,
                 row_caps,
+                None,
                 tree,
             ),
+            // The position pass solves the first (load-path) tree exactly
+            // and the rows off it by sequential corrections, as for one
+            // spanning tree: correcting on every covering tree moved a
+            // ring of 40 ropes round a 1000× body by 0.17 % in its last
+            // second (the velocity sweeps carry the heavy loads).
+            GroupSolve::Trees(range) => {
+                if let Some(first) = groups.trees(range).first() {
+                    solve_tree_positions(
+                        rows,
+                        group,
+                        groups.plan(first),
+                        displacements,
+                        slop,
+                        beta,
+                        max,
+                        side_stiffness,
+                        row_caps,
+                        None,
+                        tree,
+                    );
+                }
+            }
         }
     }
 }
