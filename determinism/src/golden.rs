@@ -52,8 +52,8 @@ pub const GOLDEN: &[GoldenScenario] = &[
             (360, 0xba9bd0b543205e95, 0x10d3fce1946df213),
             (420, 0x0bef850759a124b1, 0x7c2cf6be07c8026c),
             (480, 0x161de76d06933700, 0xb8dad9e5efc92edd),
-            (540, 0x455ef29e3f1fb46a, 0x343bd1f0b6ec901b),
-            (600, 0x4768fed44ee5ca7b, 0x09dddaa20470f38a),
+            (540, 0x22aac6622f25d7f6, 0x9e93f154968f6161),
+            (600, 0x01d2127f9942feae, 0x5464e43c5387a08c),
         ],
     },
     GoldenScenario {

@@ -10,6 +10,7 @@ use crate::math::{Scalar, Vec2};
 use super::CachedContact;
 use super::box_corner::{box_contact, corner_apart, corner_impact};
 use super::coincident::coincident_contact;
+use super::level_seam::level_seam;
 use crate::dynamics::{Body, BodyKind};
 use crate::solver::restitution::BounceCandidate;
 use crate::solver::row::{ContactConstraint, effective_mass};
@@ -179,6 +180,10 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         // The last inverse-mass sum and its reciprocal: piles of equal
         // masses need one division, not one per pair (same value).
         let mut last_mass = (S::ZERO, S::ZERO);
+        // One substep of the world's gravity from rest, per axis (`|g|·h²`,
+        // the level seams' allowance, `collision::level_seam`).
+        let h2 = h.mul(h);
+        let sag = Vec2::new(gravity.x.abs().mul(h2), gravity.y.abs().mul(h2));
         for &(a, b) in pairs {
             let (Some(body_a), Some(body_b)) = (body(a), body(b)) else {
                 continue;
@@ -224,6 +229,24 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                 )
             };
             let (va, vb) = (velocities[a as usize], velocities[b as usize]);
+            let mut on_seam = false;
+            // A body moving along flush faces meets the next one's face,
+            // not its corner (`collision::level_seam`). Circle pairs have
+            // no faces.
+            if !matches!(
+                (body_a.shape, body_b.shape),
+                (Shape::Circle { .. }, Shape::Circle { .. })
+            ) && let Some(seam) = level_seam(
+                &contact,
+                body_b.position - body_a.position,
+                body_a.shape.half_extents() + body_b.shape.half_extents(),
+                (vb - va).scale(h),
+                sag,
+                linear_slop,
+            ) {
+                contact = seam;
+                on_seam = true;
+            }
             if is_box_pair
                 && corner_apart(
                     &Aabb::new(body_a.position, body_a.shape.half_extents()),
@@ -254,7 +277,11 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             // closes, `s' = −t·(Δv·n')·h`, so the row lets the pair move
             // exactly to the impact. Gaps within the slop count as
             // touching and are left alone.
-            if contact.separation > linear_slop && vn.neg().mul(h) > contact.separation {
+            // (Not at a level seam: the motion there holds a gravity step
+            // the support below takes out, and its time of impact would
+            // hit the side face the seam rule has just ruled out.)
+            if !on_seam && contact.separation > linear_slop && vn.neg().mul(h) > contact.separation
+            {
                 match shape_toi(
                     &body_a.shape,
                     body_a.position,
