@@ -68,8 +68,8 @@ pub const GOLDEN: &[GoldenScenario] = &[
             (360, 0x1f0b4fd9ce10e3d3, 0x47e95aa02dda4b73),
             (420, 0x0a99b3dc83cb7531, 0x9cb0eaacecbbcc5a),
             (480, 0xaa482df9b70204ec, 0x1449bb70f8924e8a),
-            (540, 0x6b23cdf3b1b109ce, 0x88c115e786959875),
-            (600, 0x48f800a75ff25c4d, 0x02078b57ef02ed90),
+            (540, 0x62b8a440108eb73d, 0x88c115e786959875),
+            (600, 0x220acb12d632fc3e, 0x02078b57ef02ed90),
         ],
     },
     GoldenScenario {

@@ -6,6 +6,7 @@
 //! ("Why springs are solved together").
 
 use super::spring::theta_for;
+use super::spring_direct::DirectScratch;
 use super::spring_support::SupportScratch;
 use crate::math::{Scalar, Vec2};
 
@@ -81,7 +82,7 @@ impl<S: Scalar> SpringRow<S> {
     /// Moves the ends' position velocities by an impulse change `change`
     /// (a vector per lane): `p_a −= θ_a·w_a·change`, `p_b += θ_b·w_b·change`.
     #[inline]
-    fn push(&self, change: Vec2<S>, position_velocities: &mut [Vec2<S>]) {
+    pub(crate) fn push(&self, change: Vec2<S>, position_velocities: &mut [Vec2<S>]) {
         let (tw_a, tw_b) = self.position_push;
         let push_b = change.scale(tw_b);
         // Equal ends (equal masses and blends) share the product.
@@ -140,6 +141,9 @@ pub(crate) struct SpringScratch<S: Scalar> {
     pub(crate) position_velocities: Vec<Vec2<S>>,
     /// The contact rows the sweeps carry (`spring_support.rs`).
     pub(crate) supports: SupportScratch<S>,
+    /// The direct solve of stiff groups and its kept factor
+    /// (`spring_direct.rs`).
+    pub(crate) direct: DirectScratch<S>,
     /// The last spring's blends (springs of a lattice mostly share them).
     last_blend: Option<BlendCache<S>>,
 }
@@ -246,6 +250,7 @@ const RESOLVED_INVERSE_DIAGONAL: (i32, i32) = (4, 5);
 /// because the capped sweeps then overshoot instead of under-solving.
 fn start_from_free_impulses<S: Scalar>(
     rows: &mut [SpringRow<S>],
+    direct: &[bool],
     velocities: &[Vec2<S>],
     position_velocities: &mut [Vec2<S>],
 ) {
@@ -257,7 +262,11 @@ fn start_from_free_impulses<S: Scalar>(
             S::ZERO
         }
     };
-    for row in rows.iter_mut().filter(|row| !row.radial) {
+    for (row, _) in rows
+        .iter_mut()
+        .zip(direct.iter().chain(core::iter::repeat(&false)))
+        .filter(|(row, direct)| !row.radial && !**direct)
+    {
         let relative = velocities[row.b as usize] - velocities[row.a as usize];
         let free = row.target - row.rate_gain.mul_elements(relative);
         row.impulse = Vec2::new(
@@ -299,6 +308,7 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
     rows: &mut [SpringRow<S>],
     radial: &mut [RadialRow<S>],
     supports: &mut SupportScratch<S>,
+    direct: &mut DirectScratch<S>,
     (velocities, position_velocities): (&[Vec2<S>], &mut [Vec2<S>]),
     h: S,
 ) -> usize {
@@ -306,7 +316,10 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
     // by the coupling between springs, a small fraction while the sweeps
     // converge). 2⁻⁹ = 1/512.
     let mut threshold = S::ZERO;
-    start_from_free_impulses(rows, velocities, position_velocities);
+    if !direct.solve(rows, radial, velocities, position_velocities, h) {
+        direct.direct.clear();
+    }
+    start_from_free_impulses(rows, &direct.direct, velocities, position_velocities);
     for sweep in 1..=MAX_SPRING_SWEEPS {
         // Scenes without radial springs get a sweep with no radial branch
         // (the bendy lattices' cost is the sweep's inner loop).
@@ -383,19 +396,15 @@ fn sweep_rows<S: Scalar, const RADIAL: bool>(
     largest_change
 }
 
-/// One Gauss–Seidel update of a radial row, re-linearised about where the
-/// ends' position velocities `(p_a, p_b)` now put them (the discrete
-/// gradient of [`crate::constraints`], "Radial springs"): with
-/// `r' = r + h·(p_b − p_a)` and `l' = |r'|`, the row solves
-/// `λ = −h·k·(x + θ_s·(l' − l)) − c·(l' − l)` along
-/// `d = (r + (1 − θ_b)·h·p_b − (1 − θ_a)·h·p_a) / (θ̄·l + (1 − θ̄)·l')`.
-/// Returns the change of the impulse vector `λ·d` (already stored).
-fn radial_lane<S: Scalar>(
-    row: &mut SpringRow<S>,
-    geometry: &mut RadialRow<S>,
+/// Where the position velocities `(p_a, p_b)` put a radial row's ends:
+/// the end length `l' = |r + h·(p_b − p_a)|` and the impulse direction
+/// `d = (r + (1 − θ_b)·h·p_b − (1 − θ_a)·h·p_a) / (θ̄·l + (1 − θ̄)·l')`
+/// (the discrete gradient of [`crate::constraints`], "Radial springs").
+pub(crate) fn radial_geometry<S: Scalar>(
+    geometry: &RadialRow<S>,
     (p_a, p_b): (Vec2<S>, Vec2<S>),
     h: S,
-) -> Vec2<S> {
+) -> (S, Vec2<S>) {
     let end = geometry.offset + (p_b - p_a).scale(h);
     let end_length = end.length();
     let (lag_a, lag_b) = geometry.lag;
@@ -419,6 +428,23 @@ fn radial_lane<S: Scalar>(
         // the geometry module's convention for coincident points.
         pole.try_normalize().unwrap_or(Vec2::Y)
     };
+    (end_length, direction)
+}
+
+/// One Gauss–Seidel update of a radial row, re-linearised about where the
+/// ends' position velocities `(p_a, p_b)` now put them (the discrete
+/// gradient of [`crate::constraints`], "Radial springs"): with
+/// `r' = r + h·(p_b − p_a)` and `l' = |r'|`, the row solves
+/// `λ = −h·k·(x + θ_s·(l' − l)) − c·(l' − l)` along
+/// `d = (r + (1 − θ_b)·h·p_b − (1 − θ_a)·h·p_a) / (θ̄·l + (1 − θ̄)·l')`.
+/// Returns the change of the impulse vector `λ·d` (already stored).
+fn radial_lane<S: Scalar>(
+    row: &mut SpringRow<S>,
+    geometry: &mut RadialRow<S>,
+    ends: (Vec2<S>, Vec2<S>),
+    h: S,
+) -> Vec2<S> {
+    let (end_length, direction) = radial_geometry(geometry, ends, h);
     let residual = row
         .target
         .x
@@ -477,6 +503,7 @@ mod tests {
                     &mut scratch.rows,
                     &mut [],
                     &mut SupportScratch::default(),
+                    &mut DirectScratch::default(),
                     (&p.clone(), &mut p),
                     h
                 ) <= 2
@@ -527,6 +554,7 @@ mod tests {
             &mut scratch.rows,
             &mut [],
             &mut SupportScratch::default(),
+            &mut DirectScratch::default(),
             (&p.clone(), &mut p),
             h,
         );

@@ -14,7 +14,7 @@ use super::scalar::Scalar;
 /// A double-width value: the exact product of two [`Scalar`]s.
 ///
 /// All operations saturate, like the narrow ones.
-pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd {
+pub trait WideScalar: Copy + Debug + PartialEq + PartialOrd + Send + Sync {
     /// The narrow scalar this is the wide form of.
     type Narrow: Scalar;
     /// Zero.

@@ -212,6 +212,7 @@ impl<S: Scalar> World<S> {
             &mut scratch.rows,
             &mut scratch.radial,
             &mut scratch.supports,
+            &mut scratch.direct,
             (&context.velocities, &mut scratch.position_velocities),
             h,
         );
