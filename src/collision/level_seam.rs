@@ -81,6 +81,13 @@ pub(crate) fn level_seam<S: Scalar>(
     sag: Vec2<S>,
     slop: S,
 ) -> Option<Contact<S>> {
+    // Cheapest test first (most pairs, a resting pile's, fail it): moving
+    // along some axis by more than slop + |g|·h² (see `moving` below).
+    if relative_displacement.x.abs() <= slop.add(sag.x)
+        && relative_displacement.y.abs() <= slop.add(sag.y)
+    {
+        return None;
+    }
     // Active this substep: s − closing along n < slop.
     let closing_n = relative_displacement.dot(contact.normal).neg();
     if contact.separation.sub(closing_n) >= slop {
