@@ -28,26 +28,11 @@
 
 use clockwork2d::prelude::*;
 
+mod common;
+use common::split_mix::SplitMix;
+
 const TOLERANCE: f64 = 1e-6;
 const MAX_DISTANCE: f64 = 200.0;
-
-/// A simple deterministic generator (SplitMix64).
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, low: f64, high: f64) -> f64 {
-        low + (high - low) * self.unit()
-    }
-}
 
 /// A shape as the reference sees it: centre and either a radius or half
 /// extents.

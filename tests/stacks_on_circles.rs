@@ -21,6 +21,9 @@
 
 use clockwork2d::prelude::*;
 
+mod common;
+use common::split_mix::SplitMix;
+
 const SLOP: f64 = 1e-4;
 /// 10 s at 60 Hz in release; 4 s (the sleep deadline) in debug.
 const TICKS: u64 = if cfg!(debug_assertions) { 240 } else { 600 };
@@ -44,24 +47,6 @@ enum Base {
 
 /// One body of the scene: id, x, ideal y, depth.
 type Placed = (BodyId, f64, f64, usize);
-
-/// A simple deterministic generator (SplitMix64) for the random sizes.
-struct SplitMix(u64);
-
-impl SplitMix {
-    fn unit(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, low: f64, high: f64) -> f64 {
-        low + (high - low) * self.unit()
-    }
-}
 
 fn fixed_box(world: &mut World, half: (f64, f64), at: (f64, f64)) {
     world

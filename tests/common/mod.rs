@@ -2,7 +2,8 @@
 //! files (`file_checksum`), proptest strategies (`fx_strategies`), the
 //! oscillator tests' settings and probes (`oscillators`), raw-bit access to
 //! the fixed-point types for exact reference arithmetic (`raw_fixed`),
-//! resting scenes of boxes and their measures (`resting`).
+//! resting scenes of boxes and their measures (`resting`), a seeded random
+//! generator for random scenes (`split_mix`).
 //!
 //! Every float here is a literal or a test-side measurement converted at the
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
@@ -13,6 +14,7 @@ pub mod fx_strategies;
 pub mod oscillators;
 pub mod raw_fixed;
 pub mod resting;
+pub mod split_mix;
 
 use clockwork2d::prelude::*;
 
