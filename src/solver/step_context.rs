@@ -78,4 +78,8 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) rebound_partners: ReboundPartners,
     /// Displacements before the position pass (to bound its corrections).
     pub(crate) displacements_before_correction: Vec<Vec2<S>>,
+    /// The displacements where the rope settling rounds stood best (the
+    /// least worst excess), to go back to when a round does not improve
+    /// on them.
+    pub(crate) settled_displacements: Vec<Vec2<S>>,
 }

@@ -76,9 +76,13 @@
 //! inverse mass), so `λ⁰ = e/d` never amplifies the residual by more than
 //! `2¹⁶ / w`, and all products saturate.
 
+mod loop_closure;
+
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::{ContactConstraint, solve_position_row};
 use crate::solver::tree_plan::{NO_CHILD, TreeRow};
+pub(crate) use loop_closure::MAX_LOOP_ROWS;
+use loop_closure::{LoopScratch, solve_closed_tree};
 
 /// A symmetric 2×2 matrix.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -139,8 +143,11 @@ pub(crate) struct TreeScratch<S: Scalar> {
     /// every box that rests on two grounded ones).
     is_dependent: Vec<bool>,
     /// Whether each row of the current group is in its tree plan (rows
-    /// off the spanning tree are not: sequential impulses solve them).
+    /// off the spanning tree are not: sequential impulses solve them, or
+    /// [`loop_closure`] with the tree).
     in_plan: Vec<bool>,
+    /// Working memory of the loop closure ([`loop_closure`]).
+    loops: LoopScratch<S>,
 }
 
 impl<S: Scalar> TreeScratch<S> {
@@ -151,6 +158,15 @@ impl<S: Scalar> TreeScratch<S> {
         self.mobility[k] = Sym2::scalar(inverse_mass);
         self.drift[k] = Vec2::ZERO;
         self.load[k] = Vec2::ZERO;
+    }
+
+    /// Lists row `r` as left out of the exact solve (it depends on the
+    /// rows solved).
+    fn mark_dependent(&mut self, r: usize) {
+        if !self.is_dependent[r] {
+            self.dependent.push(r);
+            self.is_dependent[r] = true;
+        }
     }
 
     /// Sizes the per-slot and per-row arrays.
@@ -364,6 +380,36 @@ fn mark_plan<S: Scalar>(group: &[usize], plan: &[TreeRow], work: &mut TreeScratc
     }
 }
 
+/// Whether a tree group's rows off its spanning tree are solved exactly
+/// with the tree ([`loop_closure`]): it has some (the plan holds every
+/// other row of the group), and at most [`MAX_LOOP_ROWS`].
+///
+/// The callers close the loops of rope groups only (those are the groups
+/// passed a sideways stiffness): a cyclic contact group above the block
+/// solver's size is a pile with a row off the tree for nearly every body,
+/// far beyond what `k + 2` tree solves per sweep can afford.
+fn closes_loops(group: &[usize], plan: &[TreeRow]) -> bool {
+    let off = group.len().saturating_sub(plan.len());
+    (1..=MAX_LOOP_ROWS).contains(&off)
+}
+
+/// One exact solve of the active rows: the tree alone, or with its active
+/// rows off the tree when `closing` ([`loop_closure`]).
+fn solve_rows<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    group: &[usize],
+    plan: &[TreeRow],
+    closing: bool,
+    work: &mut TreeScratch<S>,
+) {
+    if closing {
+        work.collect_loop_rows(group);
+        solve_closed_tree(rows, plan, work);
+    } else {
+        solve_tree(rows, plan, work);
+    }
+}
+
 /// The drift of a row's child (zero for a fixed or still other end).
 fn child_drift<S: Scalar>(work: &TreeScratch<S>, t: &TreeRow) -> Vec2<S> {
     if t.child == NO_CHILD {
@@ -454,14 +500,18 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     // (0.73–2.02 % stretch). A touching row that should not hold is
     // released by the first round (its impulse would pull).
     mark_plan(group, plan, work);
+    // The count of rows off the tree in `closes_loops` holds for a group
+    // solved on one tree only (`off_plan` not given).
+    let closing = side.is_some() && off_plan.is_none() && closes_loops(group, plan);
     for &ri in group {
         let row = &rows[ri];
         work.side_stiffness[ri] = side
             .as_ref()
+            .filter(|_| work.in_plan[ri])
             .and_then(|sr| sr.stiffness.get(ri).copied())
             .unwrap_or(S::ZERO);
         work.side_value[ri] = S::ZERO;
-        work.active[ri] = work.in_plan[ri]
+        work.active[ri] = (work.in_plan[ri] || closing)
             && (row.normal_impulse.is_positive()
                 || row.separation <= slop
                 || !shortfall(row, velocities).is_negative());
@@ -486,7 +536,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
                 }
             }
         }
-        solve_tree(rows, plan, work);
+        solve_rows(rows, group, plan, closing, work);
         let mut released = false;
         for &ri in group {
             if work.active[ri] && rows[ri].normal_impulse.add(work.value[ri]).is_negative() {
@@ -518,7 +568,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
         // Rows left out that the solution now violates join the next round.
         let mut joined = false;
         for &ri in group {
-            if work.in_plan[ri]
+            if (work.in_plan[ri] || closing)
                 && !work.active[ri]
                 && shortfall(&rows[ri], velocities).is_positive()
             {
@@ -532,7 +582,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     }
     for &ri in group {
         let row = &mut rows[ri];
-        let missing = if work.in_plan[ri] {
+        let missing = if work.in_plan[ri] || closing {
             !work.active[ri] || work.is_dependent[ri]
         } else {
             off_plan.is_none_or(|rest| rest[ri])
@@ -598,10 +648,11 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     // into the rows next to it (released if holding would pull); rows
     // apart stay out.
     mark_plan(group, plan, work);
+    let closing = !side_stiffness.is_empty() && off_plan.is_none() && closes_loops(group, plan);
     let mut any = false;
     for &ri in group {
         let row = &rows[ri];
-        if !work.in_plan[ri] {
+        if !(work.in_plan[ri] || closing) {
             work.active[ri] = false;
             continue;
         }
@@ -612,7 +663,11 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
             .add((displacements[row.b as usize] - displacements[row.a as usize]).dot(row.normal));
         work.active[ri] = c.is_negative() || separation <= slop;
         work.value[ri] = c.neg();
-        work.side_stiffness[ri] = side_stiffness.get(ri).copied().unwrap_or(S::ZERO);
+        work.side_stiffness[ri] = if work.in_plan[ri] {
+            side_stiffness.get(ri).copied().unwrap_or(S::ZERO)
+        } else {
+            S::ZERO
+        };
         work.side_value[ri] = S::ZERO;
     }
     if any {
@@ -623,7 +678,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
         solve_tree_position_rounds(
             rows,
             group,
-            plan,
+            (plan, closing),
             displacements,
             (slop, join),
             work,
@@ -660,14 +715,14 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
 fn solve_tree_position_rounds<S: Scalar>(
     rows: &[ContactConstraint<S>],
     group: &[usize],
-    plan: &[TreeRow],
+    (plan, closing): (&[TreeRow], bool),
     displacements: &mut [Vec2<S>],
     (slop, join): (S, bool),
     work: &mut TreeScratch<S>,
     correction: impl Fn(usize, &[Vec2<S>]) -> S,
 ) {
     for _ in 0..ROUNDS {
-        solve_tree(rows, plan, work);
+        solve_rows(rows, group, plan, closing, work);
         let mut released = false;
         for &ri in group {
             if work.active[ri] && work.value[ri].is_negative() {
@@ -688,7 +743,7 @@ fn solve_tree_position_rounds<S: Scalar>(
             let mut joined = false;
             for &ri in group {
                 if join
-                    && work.in_plan[ri]
+                    && (work.in_plan[ri] || closing)
                     && !work.active[ri]
                     && correction(ri, displacements).is_negative()
                 {
@@ -698,7 +753,7 @@ fn solve_tree_position_rounds<S: Scalar>(
             if !joined {
                 return;
             }
-            for &ri in group.iter().filter(|&&ri| work.in_plan[ri]) {
+            for &ri in group.iter().filter(|&&ri| work.in_plan[ri] || closing) {
                 let row = &rows[ri];
                 let separation = row.separation.add(
                     (displacements[row.b as usize] - displacements[row.a as usize]).dot(row.normal),
