@@ -116,8 +116,8 @@ pub const GOLDEN: &[GoldenScenario] = &[
             (360, 0x18f43e2d41c0d49b, 0xd35cd9a068b866f0),
             (420, 0xfaf142a8266850f9, 0x7be401650052078f),
             (480, 0xa3a3d6b7b267bd9a, 0x3de0a6bed7a26c6f),
-            (540, 0x8a6fc75e90d964ef, 0x0f9d465d5ce96543),
-            (600, 0x485eea71c89dbaaa, 0x8d976f9dad8eaec3),
+            (540, 0xe1614b20b39b05b5, 0xa93851150df9409a),
+            (600, 0x79f05598a55aea8a, 0xb3fc09023c4f113c),
         ],
     },
     GoldenScenario {

@@ -223,7 +223,22 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
     work: &mut BlockScratch<S>,
 ) {
     work.active.clear();
-    work.active.extend_from_slice(group);
+    if side.is_some() {
+        work.active.extend_from_slice(group);
+    } else {
+        // Contacts: a row carrying no impulse whose target the bodies
+        // already meet (`J v ≥ target`: a speculative row of bodies
+        // still apart, a touching row not pressed) needs no impulse;
+        // starting with it active makes the equality solve pull on it
+        // and a round release it again, and a group with more such rows
+        // than rounds never got a solution applied (below).
+        work.active.extend(group.iter().copied().filter(|&ri| {
+            let row = &rows[ri];
+            let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
+            row.normal_impulse.is_positive() || vn < row.target_velocity
+        }));
+    }
+    let mut applied = false;
     for _ in 0..ROUNDS {
         match side.as_ref() {
             Some((stiffness, _)) => work.collect_sides(stiffness),
@@ -247,7 +262,7 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
             },
         );
         if !solved {
-            return;
+            break;
         }
         // Release rows that would push (their accumulated impulse would
         // turn negative): zero them, and re-solve the others.
@@ -272,7 +287,8 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
                 }
                 apply_side_impulse(&rows[ri], y, velocities);
             }
-            return;
+            applied = true;
+            break;
         }
         for &ri in &released {
             let old = rows[ri].normal_impulse;
@@ -281,6 +297,48 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
             apply_impulse(&row, old.neg(), velocities);
         }
         work.active.retain(|ri| !released.contains(ri));
+    }
+    if side.is_none() {
+        sequential_remainder(rows, group, velocities, applied, &work.active);
+    }
+}
+
+/// The contact rows of `group` the rounds of [`solve_group_velocities`]
+/// did not solve take one sequential impulse each (accumulated impulse
+/// kept ≥ 0): rows left out or released, and every row when no round's
+/// solution was applied (`applied` false; `active` the rows still in the
+/// set, ascending as `group`). Why: every round may release rows (each
+/// release changes which others must pull), and when the rounds ran out
+/// the group got only the releases: a column of 19 bodies in a crowd of
+/// 300 kept its rows unsolved in every sweep, gravity piled up in its
+/// velocities (3 units/s) while the position pass alone held it, and it
+/// never slept.
+fn sequential_remainder<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    group: &[usize],
+    velocities: &mut [Vec2<S>],
+    applied: bool,
+    active: &[usize],
+) {
+    let mut next_active = active.iter().copied().peekable();
+    for &ri in group {
+        let solved = applied && next_active.peek() == Some(&ri);
+        if next_active.peek() == Some(&ri) {
+            next_active.next();
+        }
+        if solved {
+            continue;
+        }
+        let row = &mut rows[ri];
+        let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
+        let old = row.normal_impulse;
+        let lambda = row.target_velocity.sub(vn).mul(row.effective_mass);
+        row.normal_impulse = old.add(lambda).max(S::ZERO);
+        let dn = row.normal_impulse.sub(old);
+        if dn != S::ZERO {
+            let row = *row;
+            apply_impulse(&row, dn, velocities);
+        }
     }
 }
 
