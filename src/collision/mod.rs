@@ -4,6 +4,7 @@ mod box_corner;
 mod broad_phase;
 mod coincident;
 mod contact_cache;
+mod face_past_walls;
 mod level_seam;
 mod narrow_phase;
 mod pair_sort;

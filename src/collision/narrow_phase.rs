@@ -10,6 +10,7 @@ use crate::math::{Scalar, Vec2};
 use super::CachedContact;
 use super::box_corner::{box_contact, corner_apart, corner_impact};
 use super::coincident::coincident_contact;
+use super::face_past_walls::face_past_walls;
 use super::level_seam::level_seam;
 use crate::dynamics::{Body, BodyKind};
 use crate::solver::restitution::BounceCandidate;
@@ -282,14 +283,31 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             // hit the side face the seam rule has just ruled out.)
             if !on_seam && contact.separation > linear_slop && vn.neg().mul(h) > contact.separation
             {
-                match shape_toi(
+                let toi = shape_toi(
                     &body_a.shape,
                     body_a.position,
                     va.scale(h),
                     &body_b.shape,
                     body_b.position,
                     vb.scale(h),
-                ) {
+                );
+                // A miss or a corner hit of a face contact may only be the
+                // straight motion's answer: reflected off the walls it meets
+                // first, the body may still reach the face
+                // (`collision::face_past_walls`). Then the row along the
+                // start normal, with the start gap, is the exact one.
+                let face_lost = match toi {
+                    Toi::Miss => true,
+                    Toi::Hit { normal, .. } => normal != contact.normal,
+                    Toi::Overlapping => false,
+                };
+                let toi =
+                    if face_lost && self.face_reached_past_walls(&body, (a, b), contact.normal) {
+                        Toi::Overlapping
+                    } else {
+                        toi
+                    };
+                match toi {
                     Toi::Miss => continue,
                     Toi::Hit { t, normal }
                         if is_box_pair
@@ -397,6 +415,61 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         to_wake.sort_unstable();
         to_wake.dedup();
         to_wake
+    }
+}
+
+impl<S: Scalar> NarrowPhase<'_, S> {
+    /// Whether the pair `(a, b)` — one body movable, the other immovable
+    /// and at rest, in contact along the axis-aligned `normal` (a to b) —
+    /// meets on that face once the movable body's motion is reflected off
+    /// its other immovable partners at rest
+    /// ([`face_past_walls`]). Only asked when the pair's own time of
+    /// impact missed the face (rare: fast motion past a face's end), so
+    /// the partners are found by a scan of the pairs.
+    fn face_reached_past_walls<'b>(
+        &self,
+        body: &impl Fn(u32) -> Option<&'b Body<S>>,
+        (a, b): (u32, u32),
+        normal: Vec2<S>,
+    ) -> bool
+    where
+        S: 'b,
+    {
+        let immovable = |i: u32| {
+            !self.inverse_masses[i as usize].is_positive()
+                && self.velocities[i as usize] == Vec2::ZERO
+        };
+        let (moving, target, n) = match (immovable(a), immovable(b)) {
+            (false, true) => (a, b, normal),
+            (true, false) => (b, a, -normal),
+            _ => return false,
+        };
+        if normal.x != S::ZERO && normal.y != S::ZERO {
+            return false;
+        }
+        let (Some(mover), Some(face)) = (body(moving), body(target)) else {
+            return false;
+        };
+        let walls = self.pairs.iter().filter_map(|&(p, q)| {
+            let other = match (p == moving, q == moving) {
+                (true, _) => q,
+                (_, true) => p,
+                _ => return None,
+            };
+            if other == target || !immovable(other) {
+                return None;
+            }
+            body(other).map(|w| (&w.shape, w.position, w.restitution))
+        });
+        face_past_walls(
+            &mover.shape,
+            mover.position,
+            self.velocities[moving as usize].scale(self.h),
+            mover.restitution,
+            (&face.shape, face.position),
+            n,
+            walls,
+        )
     }
 }
 

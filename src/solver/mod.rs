@@ -7,6 +7,7 @@
 //! solves. See ARCHITECTURE.md.
 
 pub(crate) mod block_solve;
+pub(crate) mod flight_reflection;
 pub(crate) mod forest_cover;
 pub(crate) mod rebound_partners;
 pub(crate) mod restitution;

@@ -2,7 +2,8 @@
 //! sweep (`World::sweep_rebounds`): one list per rebounding body, built
 //! from the substep's candidate pairs.
 
-use crate::math::{Scalar, Vec2};
+use super::restitution::Rebound;
+use crate::math::Scalar;
 
 /// The broad-phase partners of each rebounding slot, into `out`: for the
 /// `k`-th entry of `rebounds` (sorted by slot, without repeats),
@@ -17,7 +18,7 @@ use crate::math::{Scalar, Vec2};
 /// table look-up per end, instead of a binary search per end and a sort.
 pub(crate) fn collect_rebound_partners<S: Scalar>(
     pairs: &[(u32, u32)],
-    rebounds: &[(u32, Vec2<S>)],
+    rebounds: &[Rebound<S>],
     slot_count: usize,
     out: &mut ReboundPartners,
 ) {
@@ -28,8 +29,8 @@ pub(crate) fn collect_rebound_partners<S: Scalar>(
     } = out;
     rebound_of_slot.clear();
     rebound_of_slot.resize(slot_count, NOT_REBOUNDING);
-    for (k, &(slot, _)) in rebounds.iter().enumerate() {
-        if let Some(entry) = rebound_of_slot.get_mut(slot as usize) {
+    for (k, rebound) in rebounds.iter().enumerate() {
+        if let Some(entry) = rebound_of_slot.get_mut(rebound.slot as usize) {
             // At most one entry per slot and far fewer than u32::MAX.
             *entry = u32::try_from(k).unwrap_or(NOT_REBOUNDING);
         }
@@ -96,7 +97,7 @@ impl ReboundPartners {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::math::Fx;
+    use crate::math::{Fx, Vec2};
 
     /// Every list equals the sorted partners of its slot found by brute
     /// force, for slots at the ends of the slot range, with no partners,
@@ -114,15 +115,20 @@ mod tests {
             (5, 9),
             (8, 9),
         ];
-        let rebounds: Vec<(u32, Vec2<Fx>)> = [0, 2, 3, 6, 9]
+        let rebounds: Vec<Rebound<Fx>> = [0, 2, 3, 6, 9]
             .iter()
-            .map(|&slot| (slot, Vec2::ZERO))
+            .map(|&slot| Rebound {
+                slot,
+                start: Vec2::ZERO,
+                time: Fx::ZERO,
+            })
             .collect();
         let mut out = ReboundPartners::default();
         // Twice: the buffers are reused.
         for _ in 0..2 {
             collect_rebound_partners(&pairs, &rebounds, 10, &mut out);
-            for (k, &(slot, _)) in rebounds.iter().enumerate() {
+            for (k, rebound) in rebounds.iter().enumerate() {
+                let slot = rebound.slot;
                 let mut expected: Vec<u32> = pairs
                     .iter()
                     .filter_map(|&(a, b)| (a == slot).then_some(b).or((b == slot).then_some(a)))

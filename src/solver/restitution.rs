@@ -76,6 +76,20 @@ pub(crate) struct BounceCandidate<S: Scalar> {
     pub(crate) restitution: S,
 }
 
+/// A body a bounce moved: the start of its rebound motion, for the rebound
+/// sweep (`World::sweep_rebounds`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Rebound<S: Scalar> {
+    /// The body's slot.
+    pub(crate) slot: u32,
+    /// Its displacement before the bounce moved it (the rebound starts
+    /// there).
+    pub(crate) start: Vec2<S>,
+    /// The instant of the bounce within the substep (`τ`, in `[0, h]`):
+    /// the rebound motion covers `h − τ`.
+    pub(crate) time: S,
+}
+
 /// The normal velocity and gap a bounce leaves at the end of the substep.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct BounceEnd<S: Scalar> {
@@ -85,6 +99,8 @@ pub(crate) struct BounceEnd<S: Scalar> {
     pub(crate) gap: S,
     /// The launch speed `w = e·|u_c|`.
     pub(crate) launch: S,
+    /// The instant of contact `τ` within the substep.
+    pub(crate) time: S,
 }
 
 /// Steps 1 and 2 of the module notes for a gap `s0` (negative values count
@@ -135,6 +151,7 @@ pub(crate) fn bounce_end<S: Scalar>(
         velocity,
         gap,
         launch,
+        time: tau,
     })
 }
 
@@ -148,7 +165,7 @@ pub(crate) fn apply_bounces<S: Scalar>(
     h: S,
     velocities: &mut [Vec2<S>],
     displacements: &mut [Vec2<S>],
-    rebounds: &mut Vec<(u32, Vec2<S>)>,
+    rebounds: &mut Vec<Rebound<S>>,
 ) {
     for candidate in candidates {
         let Some(c) = rows.get(candidate.row as usize) else {
@@ -202,14 +219,22 @@ pub(crate) fn apply_bounces<S: Scalar>(
         let shift = ds.mul(c.effective_mass);
         if c.inverse_mass_a.is_positive() {
             if shift != S::ZERO {
-                rebounds.push((c.a, displacements[ia]));
+                rebounds.push(Rebound {
+                    slot: c.a,
+                    start: displacements[ia],
+                    time: end.time,
+                });
             }
             velocities[ia] -= c.push_a.scale(impulse);
             displacements[ia] -= c.push_a.scale(shift);
         }
         if c.inverse_mass_b.is_positive() {
             if shift != S::ZERO {
-                rebounds.push((c.b, displacements[ib]));
+                rebounds.push(Rebound {
+                    slot: c.b,
+                    start: displacements[ib],
+                    time: end.time,
+                });
             }
             velocities[ib] += c.push_b.scale(impulse);
             displacements[ib] += c.push_b.scale(shift);

@@ -1,7 +1,7 @@
 //! The step context: working buffers of a step, reused from step to step so that a world in
 //! steady state allocates nothing. Derived data: never part of the state.
 
-use super::restitution::BounceCandidate;
+use super::restitution::{BounceCandidate, Rebound};
 use crate::collision::CachedContact;
 use crate::collision::{BroadPhase, Proxy};
 use crate::constraints::spring_solve::SpringScratch;
@@ -72,8 +72,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// `dynamics::restitution`).
     pub(crate) bounce_candidates: Vec<BounceCandidate<S>>,
     /// Slots whose displacement a bounce grew, with the displacement
-    /// before it (the start of the rebound motion).
-    pub(crate) rebounds: Vec<(u32, Vec2<S>)>,
+    /// before it (the start of the rebound motion) and the bounce's instant.
+    pub(crate) rebounds: Vec<Rebound<S>>,
     /// The broad-phase partners of each rebounding slot.
     pub(crate) rebound_partners: ReboundPartners,
     /// Displacements before the position pass (to bound its corrections).

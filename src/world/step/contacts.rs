@@ -13,6 +13,7 @@ use crate::collision::{contact_between, shape_toi};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
+use crate::solver::flight_reflection::{Flight, Impact, reflect_in_flight};
 use crate::solver::rebound_partners::collect_rebound_partners;
 use crate::solver::restitution::apply_bounces;
 use crate::solver::row::ContactConstraint;
@@ -246,26 +247,50 @@ impl<S: Scalar> World<S> {
     /// A partner the body already touches where its rebound starts is an
     /// obstacle at once if the rebound goes into it (along the pair's
     /// contact normal), and none if it leaves it (the body it bounced off).
-    pub(super) fn sweep_rebounds(&mut self) {
+    ///
+    /// Under gravity a bullet's reflection off a wall at rest is taken on
+    /// its own free-flight parabola, from the energy the flight holds
+    /// ([`crate::solver::flight_reflection`]): reflecting the stored
+    /// (mid-substep) velocity instead is off by `(1 + e)·a_n·(τ − h/2)` at an
+    /// impact at instant `τ`, energy gained at every floor impact late in
+    /// a substep (up to `g·h·|v_n|` per bounce). The instant `τ`, needed
+    /// only for the sign of the velocity along gravity, runs linearly along
+    /// the rebound from the bounce's instant to `h`.
+    pub(super) fn sweep_rebounds(&mut self, h: S) {
         if self.step_context.rebounds.is_empty() {
             return;
         }
         let context = &mut self.step_context;
         // One sweep per body: keep each slot's first bounce (its earliest
-        // displacement is the start of its rebound).
-        context.rebounds.sort_by_key(|r| r.0);
-        context.rebounds.dedup_by_key(|r| r.0);
+        // displacement is the start of its rebound), at the earliest
+        // instant of its bounces.
+        context.rebounds.sort_by_key(|r| r.slot);
+        context.rebounds.dedup_by(|later, first| {
+            let same = later.slot == first.slot;
+            if same {
+                first.time = first.time.min(later.time);
+            }
+            same
+        });
+        let gravity = self.settings.gravity;
         collect_rebound_partners(
             &context.pairs,
             &context.rebounds,
             context.velocities.len(),
             &mut context.rebound_partners,
         );
-        for (k, &(slot, before)) in context.rebounds.iter().enumerate() {
+        for (k, rebound) in context.rebounds.iter().enumerate() {
+            let (slot, before) = (rebound.slot, rebound.start);
             let Some(body) = self.slots[slot as usize].body.as_ref() else {
                 continue;
             };
             let bullet = body.bullet && body.is_simulated_dynamic();
+            let accel = if body.is_simulated_dynamic() {
+                gravity.scale(body.gravity_scale)
+            } else {
+                Vec2::ZERO
+            };
+            let mut time = rebound.time;
             let cap = if bullet { MAX_BULLET_IMPACTS - 1 } else { 1 };
             let partners = context.rebound_partners.of(k);
             let index = slot as usize;
@@ -313,20 +338,40 @@ impl<S: Scalar> World<S> {
                     break;
                 };
                 // Reflect off the immovable partner (normal from the bullet
-                // to it): relative approach v_n = (v_o − v)·n < 0 becomes
+                // to it): relative approach v_n = (v_o − u(τ))·n < 0 becomes
                 // −e·v_n, i.e. v += (1 + e)·v_n·n; the remaining motion's
                 // component into the partner is reflected the same way.
                 let e1 = S::ONE.add(body.restitution.max(ob.restitution));
-                let vn = (context.velocities[other as usize] - velocity).dot(normal);
-                if vn.is_negative() {
-                    velocity += normal.scale(e1.mul(vn));
-                }
+                time = time.add(t.mul(h.sub(time)));
                 let into = remaining.dot(normal);
-                rest = if into.is_positive() {
+                let reflected = if into.is_positive() {
                     remaining - normal.scale(e1.mul(into))
                 } else {
                     remaining
                 };
+                let other_velocity = context.velocities[other as usize];
+                if other_velocity == Vec2::ZERO {
+                    // A wall at rest: the reflection on the flight's parabola,
+                    // with its energy (`solver::flight_reflection`).
+                    velocity = reflect_in_flight(
+                        velocity,
+                        Flight { accel, h },
+                        Impact {
+                            end: at + remaining,
+                            point: at,
+                            new_end: at + reflected,
+                            normal,
+                            e1,
+                            time,
+                        },
+                    );
+                } else {
+                    let vn = (other_velocity - velocity).dot(normal);
+                    if vn.is_negative() {
+                        velocity += normal.scale(e1.mul(vn));
+                    }
+                }
+                rest = reflected;
             }
             at += rest;
             context.displacements[index] = at - body.position;

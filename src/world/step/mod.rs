@@ -106,7 +106,7 @@ impl<S: Scalar> World<S> {
         self.bound_corrections(h);
         self.project_out_of_immovable();
         self.bounce(h);
-        self.sweep_rebounds();
+        self.sweep_rebounds(h);
         self.settle_ropes();
         self.write_back();
         self.update_contact_cache();
