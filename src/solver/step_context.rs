@@ -82,4 +82,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// least worst excess), to go back to when a round does not improve
     /// on them.
     pub(crate) settled_displacements: Vec<Vec2<S>>,
+    /// Slots of this tick whose projection out of an immovable body was
+    /// stopped at the edge of their proxy (still deeper than the slop):
+    /// they may not fall asleep this tick. Cleared at the start of a tick.
+    pub(crate) unresolved_overlaps: Vec<u32>,
 }

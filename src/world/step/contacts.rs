@@ -9,7 +9,7 @@
 //! [`World::bounce`] → [`World::sweep_rebounds`] → write back.
 
 use super::solve::rope_position_pass;
-use crate::collision::{contact_between, shape_toi};
+use crate::collision::{Proxy, contact_between, shape_toi};
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
@@ -17,7 +17,7 @@ use crate::solver::flight_reflection::{Flight, Impact, reflect_in_flight};
 use crate::solver::rebound_partners::collect_rebound_partners;
 use crate::solver::restitution::apply_bounces;
 use crate::solver::row::ContactConstraint;
-use crate::world::{World, WorldSettings};
+use crate::world::{Slot, World, WorldSettings};
 
 /// Most times of impact a bullet takes in one substep: the bounce found by
 /// the contact solver, then up to `MAX_BULLET_IMPACTS − 1` more found by
@@ -121,15 +121,40 @@ impl<S: Scalar> World<S> {
     /// Crowd pressure acts through the dynamic–dynamic rows of the velocity
     /// and position passes, which may leave a body pushed into a wall; this
     /// is the last word, so no amount of pressure puts a body through.
+    ///
+    /// The projection keeps each body inside its broad-phase proxy (the
+    /// region searched for its partners this substep: its box, swept by its
+    /// motion, grown by the speculative margin). Beyond it the body has no
+    /// rows, so a longer projection could put it anywhere, into bodies
+    /// nothing here knows of: a body spawned coincident with two fixed
+    /// circles was projected 7.6 units along both rows' normals into a box
+    /// it had never been paired with, and fell asleep there. A projection
+    /// that would leave the proxy stops at its edge; what is left of the
+    /// overlap is resolved in the next substeps (by the position pass and
+    /// this projection, each at least the margin per axis from a resting
+    /// start), and the body is listed in `unresolved_overlaps` so it does
+    /// not fall asleep this tick ([`World::update_sleep`]).
     pub(super) fn project_out_of_immovable(&mut self) {
         let slop = self.settings.linear_slop;
         let StepContext {
             constraints,
             displacements,
+            proxies,
+            unresolved_overlaps,
             ..
         } = &mut self.step_context;
+        let reach = ProxyReach {
+            proxies,
+            slots: &self.slots,
+        };
         for _ in 0..2 {
-            project_rows_out_of_immovable(constraints, displacements, slop);
+            project_rows_out_of_immovable(
+                constraints,
+                displacements,
+                slop,
+                &reach,
+                unresolved_overlaps,
+            );
         }
     }
 
@@ -227,9 +252,21 @@ impl<S: Scalar> World<S> {
             let StepContext {
                 constraints,
                 displacements,
+                proxies,
+                unresolved_overlaps,
                 ..
             } = &mut self.step_context;
-            project_rows_out_of_immovable(constraints, displacements, slop);
+            let reach = ProxyReach {
+                proxies,
+                slots: &self.slots,
+            };
+            project_rows_out_of_immovable(
+                constraints,
+                displacements,
+                slop,
+                &reach,
+                unresolved_overlaps,
+            );
         }
     }
 
@@ -392,13 +429,46 @@ fn worst_rope_excess<S: Scalar>(context: &StepContext<S>, slop: S) -> S {
     worst
 }
 
+/// The displacements each body may end a substep with: those keeping its
+/// box within its broad-phase proxy (see
+/// [`World::project_out_of_immovable`]).
+struct ProxyReach<'a, S: Scalar> {
+    /// This substep's proxies, in slot order (`build_proxies` pushes them
+    /// so; bodies without a proxy are skipped).
+    proxies: &'a [Proxy<S>],
+    slots: &'a [Slot<S>],
+}
+
+impl<S: Scalar> ProxyReach<'_, S> {
+    /// The lowest and highest displacement (per axis) of the body in
+    /// `slot` that keep its box, from where it started the substep, inside
+    /// its proxy; `None` for a slot without a proxy (frozen, empty).
+    fn range(&self, slot: usize) -> Option<(Vec2<S>, Vec2<S>)> {
+        let index = u32::try_from(slot).ok()?;
+        let at = self
+            .proxies
+            .binary_search_by_key(&index, |p| p.index)
+            .ok()?;
+        let proxy = &self.proxies[at];
+        let now = self.slots.get(slot)?.body.as_ref()?.aabb();
+        let (lo, hi) = (now.min(), now.max());
+        Some((
+            Vec2::new(proxy.min_x.sub(lo.x), proxy.min_y.sub(lo.y)),
+            Vec2::new(proxy.max_x.sub(hi.x), proxy.max_y.sub(hi.y)),
+        ))
+    }
+}
+
 /// One pass of [`World::project_out_of_immovable`]: every row between a
 /// movable and an immovable body that is deeper than the slop moves the
-/// movable body out along the row's normal, to the slop.
+/// movable body out along the row's normal, to the slop, as far as its
+/// proxy allows (`reach`); a body stopped short is added to `unresolved`.
 fn project_rows_out_of_immovable<S: Scalar>(
     constraints: &[ContactConstraint<S>],
     displacements: &mut [Vec2<S>],
     slop: S,
+    reach: &ProxyReach<'_, S>,
+    unresolved: &mut Vec<u32>,
 ) {
     for c in constraints {
         let (ia, ib) = (c.a as usize, c.b as usize);
@@ -418,10 +488,24 @@ fn project_rows_out_of_immovable<S: Scalar>(
             continue;
         }
         let push = c.normal.scale(deficit);
-        if movable_a {
-            displacements[ia] -= push;
+        let (slot, wanted) = if movable_a {
+            (ia, displacements[ia] - push)
         } else {
-            displacements[ib] += push;
+            (ib, displacements[ib] + push)
+        };
+        let current = displacements[slot];
+        let bounded = match reach.range(slot) {
+            // A displacement already outside the range (none is, as the
+            // passes before stay within the proxy) is not pulled back.
+            Some((lo, hi)) => wanted.clamp(lo.min(current), hi.max(current)),
+            None => wanted,
+        };
+        if bounded != wanted {
+            let index = if movable_a { c.a } else { c.b };
+            if !unresolved.contains(&index) {
+                unresolved.push(index);
+            }
         }
+        displacements[slot] = bounded;
     }
 }

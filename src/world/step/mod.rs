@@ -54,6 +54,7 @@ impl<S: Scalar> World<S> {
         self.events.clear();
         let results = commands.iter().map(|c| self.apply(c.clone())).collect();
         self.wake_across_constraints();
+        self.step_context.unresolved_overlaps.clear();
         let mut previous_touching = core::mem::take(&mut self.step_context.touching_before);
         previous_touching.clear();
         previous_touching.extend(

@@ -84,6 +84,17 @@ impl<S: Scalar> World<S> {
             let root = islands::find(parents, u32::try_from(i).unwrap_or(u32::MAX)) as usize;
             island_time[root] = island_time[root].min(body.sleep_time);
         }
+        // A body still deeper than the slop in an immovable one (its
+        // projection out stopped at its proxy's edge: `step/contacts.rs`)
+        // is being pushed out, however slow it is: its island stays awake,
+        // even with `time_to_sleep` 0 (hence below any valid time, ≥ 0).
+        for &index in &self.step_context.unresolved_overlaps {
+            if let Some(body) = self.slots[index as usize].body.as_mut() {
+                body.sleep_time = S::ZERO;
+            }
+            let root = islands::find(parents, index) as usize;
+            island_time[root] = S::MIN;
+        }
         for i in 0..n {
             let Some(body) = self.slots[i].body.as_mut() else {
                 continue;
