@@ -10,15 +10,22 @@
 //!
 //! A command may put a body deep into a fixed body (a spawn or a teleport
 //! there is allowed). The position solver then removes, per position
-//! iteration, `min(max_correction, position_correction · (depth − slop))`.
-//! From the deepest overlap the current bodies allow, `d₀` (the sum of the
-//! two largest half extents in the world), that takes at most
-//! `d₀ / max_correction` iterations at the capped rate, then
-//! `ln(d₀ / TOLERANCE) / position_correction` iterations of geometric
+//! iteration, `min(max_correction, position_correction · (depth − slop))`,
+//! and the engine bounds what a body is moved out per substep: at most
+//! half the speculative margin `m` per axis in the position pass, and the
+//! projection out of immovable bodies stops at the edge of the body's
+//! broad-phase region (ARCHITECTURE.md, "Contacts after the position
+//! pass"). Along the contact normal that is at least `m/2` per substep (a
+//! per-axis cap of `m/2` allows `m/2 / max(|nₓ|, |n_y|) ≥ m/2` along `n`).
+//! So from the deepest overlap the current bodies allow, `d₀` (the sum of
+//! the two largest half extents in the world), the capped phase takes at
+//! most `d₀ / min(max_correction · position_iterations, m/2)` substeps,
+//! then `ln(d₀ / TOLERANCE) / position_correction` iterations of geometric
 //! decay (`−ln(1 − c) ≥ c`). The **patience** is that many steps (at
-//! `position_iterations × substeps` iterations per step) plus [`GRACE`]
-//! steps. An overlap deeper than `linear_slop + TOLERANCE` that lasts longer
-//! than the patience, with no spawn or teleport in between, is a finding.
+//! `substeps` substeps and `position_iterations × substeps` iterations per
+//! step) plus [`GRACE`] steps. An overlap deeper than
+//! `linear_slop + TOLERANCE` that lasts longer than the patience, with no
+//! spawn or teleport in between, is a finding.
 //!
 //! # Where it applies
 //!
@@ -108,8 +115,10 @@ fn circle_box(c: &Piece, b: &Piece) -> f64 {
 pub struct OverlapWatch {
     enabled: bool,
     slop: f64,
-    max_correction: f64,
     correction: f64,
+    /// Depth removed per substep in the capped phase (module notes).
+    capped_rate: f64,
+    substeps: f64,
     iterations_per_step: f64,
     /// Consecutive steps each (dynamic, fixed) pair has been too deep.
     deep: BTreeMap<(BodyId, BodyId), u32>,
@@ -126,8 +135,10 @@ impl OverlapWatch {
                 && correction >= 0.25
                 && max_correction >= 0.01,
             slop: settings.linear_slop.to_f64(),
-            max_correction,
             correction,
+            capped_rate: (max_correction * f64::from(settings.position_iterations))
+                .min(settings.speculative_margin.to_f64() / 2.0),
+            substeps: f64::from(settings.substeps),
             iterations_per_step: f64::from(settings.position_iterations * settings.substeps),
             deep: BTreeMap::new(),
         }
@@ -156,8 +167,9 @@ impl OverlapWatch {
             .collect();
         extents.sort_by(|a, b| b.total_cmp(a));
         let d0 = extents.iter().take(2).sum::<f64>().max(TOLERANCE);
-        let iterations = d0 / self.max_correction + (d0 / TOLERANCE).ln() / self.correction;
-        let steps = (iterations / self.iterations_per_step).ceil();
+        let capped_steps = d0 / self.capped_rate / self.substeps;
+        let decay_steps = (d0 / TOLERANCE).ln() / self.correction / self.iterations_per_step;
+        let steps = (capped_steps + decay_steps).ceil();
         // Bounded by MAX_STEPS anyway; the cast saturates.
         steps as u32 + GRACE
     }
