@@ -170,8 +170,10 @@ impl OverlapWatch {
         let capped_steps = d0 / self.capped_rate / self.substeps;
         let decay_steps = (d0 / TOLERANCE).ln() / self.correction / self.iterations_per_step;
         let steps = (capped_steps + decay_steps).ceil();
-        // Bounded by MAX_STEPS anyway; the cast saturates.
-        steps as u32 + GRACE
+        // Bounded by MAX_STEPS anyway; the cast saturates (a huge body and
+        // a tiny margin give more steps than a u32 holds), and so does the
+        // sum.
+        (steps as u32).saturating_add(GRACE)
     }
 
     /// Checks the world after a step.
