@@ -267,3 +267,39 @@ fn huge_circle_spawned_around_a_fixed_circle_is_pushed_out_at_the_documented_rat
     let settled = watch(&mut w, id, &[fixed], 1200, false, "huge circle");
     assert!(settled <= 1050, "out only at tick {settled}");
 }
+
+/// The third finding (CI's run on the fix above): a dynamic circle of
+/// radius 1/16 spawned at the centre of a fixed circle of radius 13/16 and
+/// four of radius 1/16, thrown upwards at 48 units/s, with the finding's
+/// settings. The projection moved it along the rows' normals, which the
+/// coincidence rule had chosen where it started; by the true geometry it
+/// was still 0.257 deep, and with `time_to_sleep` 0 it fell asleep there.
+/// A body the projection moves may not fall asleep that tick, so the next
+/// substep's rows see the true depth: the rules of `watch` hold.
+#[test]
+fn circle_projected_along_coincident_normals_does_not_sleep_deep() {
+    for (vx, vy) in [(0.0, 48.0), (0.0, 0.0), (-40.0, 48.0), (30.0, -30.0)] {
+        let mut w = World::new(finding_settings());
+        let id = w
+            .add_body(
+                BodyDef::dynamic(Shape::circle(fx(0.0625)))
+                    .position(vec2(-7.5, -7.75))
+                    .velocity(vec2(vx, vy)),
+            )
+            .unwrap();
+        let mut fixed = vec![
+            w.add_body(BodyDef::fixed(Shape::circle(fx(0.8125))).position(vec2(-7.5, -7.75)))
+                .unwrap(),
+        ];
+        for _ in 0..4 {
+            fixed.push(
+                w.add_body(BodyDef::fixed(Shape::circle(fx(0.0625))).position(vec2(-7.5, -7.75)))
+                    .unwrap(),
+            );
+        }
+        // Depth at most 0.875 at ≥ m/2 = 0.05 per tick: 18 ticks; the
+        // body then flies on (no gravity), so it is not asked to sleep.
+        let settled = watch(&mut w, id, &fixed, 120, false, &format!("v ({vx}, {vy})"));
+        assert!(settled <= 18, "v ({vx}, {vy}): out only at tick {settled}");
+    }
+}

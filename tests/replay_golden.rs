@@ -32,10 +32,10 @@ const SEED: u64 = 2024;
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0xa8debe5369f84f95),
-    ("pyramid", 0x8a01af2c009a7a43),
-    ("balls", 0xd06cf6ae7aa1ab5b),
+    ("pyramid", 0x3dd7721ceef34682),
+    ("balls", 0xb508f7c1151e9583),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0x171b2257aa28de15),
+    ("mixed", 0x04781335b18befae),
 ];
 // END GOLDEN
 

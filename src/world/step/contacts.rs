@@ -136,6 +136,7 @@ impl<S: Scalar> World<S> {
     /// not fall asleep this tick ([`World::update_sleep`]).
     pub(super) fn project_out_of_immovable(&mut self) {
         let slop = self.settings.linear_slop;
+        let resting = self.resting_move();
         let StepContext {
             constraints,
             displacements,
@@ -152,10 +153,21 @@ impl<S: Scalar> World<S> {
                 constraints,
                 displacements,
                 slop,
+                resting,
                 &reach,
                 unresolved_overlaps,
             );
         }
+    }
+
+    /// The most a body may move on an axis in a substep while counting as
+    /// resting: `sleep_linear_threshold · h` (as in
+    /// [`World::bound_corrections`]).
+    fn resting_move(&self) -> S {
+        let substeps = S::from_int(i32::try_from(self.settings.substeps).unwrap_or(1));
+        self.settings
+            .sleep_linear_threshold
+            .mul(self.settings.dt.div(substeps))
     }
 
     /// The last word on positions when ropes are active: each rope that a
@@ -200,6 +212,7 @@ impl<S: Scalar> World<S> {
             return;
         }
         let slop = self.settings.linear_slop;
+        let resting = self.resting_move();
         // The rounds aim 2⁻¹⁰ of the slop inside it (1e-7 at the
         // defaults) and stop once every rope is within the slop: each
         // round is a Newton step on rows re-linearised at the current
@@ -264,6 +277,7 @@ impl<S: Scalar> World<S> {
                 constraints,
                 displacements,
                 slop,
+                resting,
                 &reach,
                 unresolved_overlaps,
             );
@@ -462,11 +476,17 @@ impl<S: Scalar> ProxyReach<'_, S> {
 /// One pass of [`World::project_out_of_immovable`]: every row between a
 /// movable and an immovable body that is deeper than the slop moves the
 /// movable body out along the row's normal, to the slop, as far as its
-/// proxy allows (`reach`); a body stopped short is added to `unresolved`.
+/// proxy allows (`reach`). A body stopped short, or moved by more than it
+/// may move while counting as resting (`resting` on an axis), is added to
+/// `unresolved`: the row's separation is linear in the displacement, so a
+/// body moved far along a normal taken where it started (coincident
+/// centres) can still be deep by the true geometry, which only the next
+/// substep's rows see; it may not fall asleep before they do.
 fn project_rows_out_of_immovable<S: Scalar>(
     constraints: &[ContactConstraint<S>],
     displacements: &mut [Vec2<S>],
     slop: S,
+    resting: S,
     reach: &ProxyReach<'_, S>,
     unresolved: &mut Vec<u32>,
 ) {
@@ -500,7 +520,8 @@ fn project_rows_out_of_immovable<S: Scalar>(
             Some((lo, hi)) => wanted.clamp(lo.min(current), hi.max(current)),
             None => wanted,
         };
-        if bounded != wanted {
+        let moved = bounded - current;
+        if bounded != wanted || moved.x.abs() > resting || moved.y.abs() > resting {
             let index = if movable_a { c.a } else { c.b };
             if !unresolved.contains(&index) {
                 unresolved.push(index);
