@@ -137,6 +137,12 @@ impl<S: Scalar> World<S> {
     pub(super) fn project_out_of_immovable(&mut self) {
         let slop = self.settings.linear_slop;
         let resting = self.resting_move();
+        self.project_rows_out_of_immovable(slop, resting, 2);
+    }
+
+    /// `passes` passes of [`project_rows_out_of_immovable`] over this
+    /// substep's rows, each body kept within its proxy.
+    fn project_rows_out_of_immovable(&mut self, slop: S, resting: S, passes: u32) {
         let StepContext {
             constraints,
             displacements,
@@ -148,7 +154,7 @@ impl<S: Scalar> World<S> {
             proxies,
             slots: &self.slots,
         };
-        for _ in 0..2 {
+        for _ in 0..passes {
             project_rows_out_of_immovable(
                 constraints,
                 displacements,
@@ -262,25 +268,7 @@ impl<S: Scalar> World<S> {
                     .extend_from_slice(&context.displacements);
             }
             rope_position_pass(context, &settings);
-            let StepContext {
-                constraints,
-                displacements,
-                proxies,
-                unresolved_overlaps,
-                ..
-            } = &mut self.step_context;
-            let reach = ProxyReach {
-                proxies,
-                slots: &self.slots,
-            };
-            project_rows_out_of_immovable(
-                constraints,
-                displacements,
-                slop,
-                resting,
-                &reach,
-                unresolved_overlaps,
-            );
+            self.project_rows_out_of_immovable(slop, resting, 1);
         }
     }
 
