@@ -31,11 +31,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0xa8debe5369f84f95),
-    ("pyramid", 0x3dd7721ceef34682),
-    ("balls", 0xb508f7c1151e9583),
+    ("stack", 0x7d009b781f2d0f38),
+    ("pyramid", 0xc38e0c9d6a324827),
+    ("balls", 0x37d3c0b9b9f57ecd),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0x04781335b18befae),
+    ("mixed", 0x98f8ced452be02bb),
 ];
 // END GOLDEN
 

@@ -10,6 +10,7 @@ use crate::math::{Scalar, Vec2};
 use super::CachedContact;
 use super::box_corner::{box_contact, corner_apart, corner_impact};
 use super::coincident::coincident_contact;
+use super::deflected_sweep::{NarrowScratch, Side, deflected_impact, earlier_turn};
 use super::face_past_walls::face_past_walls;
 use super::level_seam::level_seam;
 use crate::dynamics::{Body, BodyKind};
@@ -40,6 +41,13 @@ pub(crate) fn contact_between<S: Scalar>(
         }
     }
 }
+
+/// A slot meets something this substep (a row that closes within it).
+const MEETS: u8 = 1;
+/// A slot meets a body the solver cannot move.
+const MEETS_IMMOVABLE: u8 = 2;
+/// A slot of a pair the second look checks.
+const WANTED: u8 = 4;
 
 /// Time of impact of shape `a` at `pa` moving by `da` against shape `b` at
 /// `pb` moving by `db` (normal from a to b).
@@ -158,6 +166,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         body: impl Fn(u32) -> Option<&'b Body<S>>,
         rows: &mut Vec<ContactConstraint<S>>,
         bounces: &mut Vec<BounceCandidate<S>>,
+        scratch: &mut NarrowScratch<S>,
     ) -> Vec<u32>
     where
         S: 'b,
@@ -169,10 +178,10 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             cache,
             speculative_margin,
             linear_slop,
-            restitution_threshold,
+            restitution_threshold: _,
             gravity,
             h,
-            inverse_h,
+            inverse_h: _,
         } = *self;
         rows.clear();
         bounces.clear();
@@ -181,6 +190,17 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         // The last inverse-mass sum and its reciprocal: piles of equal
         // masses need one division, not one per pair (same value).
         let mut last_mass = (S::ZERO, S::ZERO);
+        // The pairs whose straight sweep is re-checked after the loop
+        // against the rows that meet (`collision::deflected_sweep`):
+        // misses (no row yet) and hits (a row at `rows[i]`, hit at
+        // fraction `t`).
+        scratch.missed.clear();
+        scratch.hits.clear();
+        // Per slot: whether it meets anything this substep (`MEETS`), an
+        // immovable body (`MEETS_IMMOVABLE`): only such a body can be
+        // turned (`collision::deflected_sweep`).
+        scratch.flags.clear();
+        scratch.flags.resize(velocities.len(), 0);
         // One substep of the world's gravity from rest, per axis (`|g|·h²`,
         // the level seams' allowance, `collision::level_seam`).
         let h2 = h.mul(h);
@@ -281,6 +301,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             // (Not at a level seam: the motion there holds a gravity step
             // the support below takes out, and its time of impact would
             // hit the side face the seam rule has just ruled out.)
+            let mut hit_at = None;
             if !on_seam && contact.separation > linear_slop && vn.neg().mul(h) > contact.separation
             {
                 let toi = shape_toi(
@@ -308,7 +329,14 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                         toi
                     };
                 match toi {
-                    Toi::Miss => continue,
+                    // A miss is a clearance only if neither body is turned
+                    // into the other by something it meets first: decided
+                    // after the loop, when every meeting row is known
+                    // (`collision::deflected_sweep`).
+                    Toi::Miss => {
+                        scratch.missed.push((a, b));
+                        continue;
+                    }
                     Toi::Hit { t, normal }
                         if is_box_pair
                             && corner_impact(
@@ -326,9 +354,13 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                         continue;
                     }
                     Toi::Hit { t, normal } => {
+                        // Re-aimed at the impact (and re-checked after the
+                        // loop for an earlier turn of either body,
+                        // `collision::deflected_sweep`).
                         vn = (vb - va).dot(normal);
                         contact.normal = normal;
                         contact.separation = t.mul(vn.mul(h)).neg().max(S::ZERO);
+                        hit_at = Some(t);
                     }
                     Toi::Overlapping => {}
                 }
@@ -369,32 +401,81 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                 }
                 _ => (S::ZERO, S::ZERO),
             };
-            // Geometric mean of the frictions (exact, and sqrt-free, when
-            // they are equal, which is the common case).
-            let friction = if body_a.friction == body_b.friction {
-                body_a.friction
-            } else {
-                body_a.friction.mul(body_b.friction).sqrt()
-            };
-            let restitution = body_a.restitution.max(body_b.restitution);
             if sum != last_mass.0 {
                 last_mass = (sum, effective_mass(wa, wb));
             }
-            let mut constraint = ContactConstraint::new(
-                a,
-                b,
-                contact.normal,
-                contact.separation,
-                (wa, wb),
-                last_mass.1,
-                friction,
+            let (constraint, bounce) = self.row(
+                (a, body_a),
+                (b, body_b),
+                contact,
+                vn,
                 (normal_impulse, tangent_impulse),
+                last_mass.1,
             );
-            // Speculative only in the solve; the bounce comes after the
-            // position update.
-            constraint.prepare_target(vn, S::ZERO, restitution_threshold, h, inverse_h);
-            let meets = vn.neg().mul(h) >= contact.separation;
-            if restitution.is_positive() && vn < restitution_threshold.neg() && meets {
+            if let Some(mut bounce) = bounce {
+                bounce.row = u32::try_from(rows.len()).unwrap_or(u32::MAX);
+                bounces.push(bounce);
+            }
+            if vn.is_negative() && vn.neg().mul(h) >= contact.separation {
+                let flag = |w: S| MEETS | if w.is_positive() { 0 } else { MEETS_IMMOVABLE };
+                scratch.flags[a as usize] |= flag(wb);
+                scratch.flags[b as usize] |= flag(wa);
+            }
+            if let Some(t) = hit_at {
+                scratch.hits.push((rows.len(), t));
+            }
+            rows.push(constraint);
+        }
+        if to_wake.is_empty() && !(scratch.missed.is_empty() && scratch.hits.is_empty()) {
+            self.turned_rows(&body, scratch, rows, bounces, &mut to_wake);
+        }
+        to_wake.sort_unstable();
+        to_wake.dedup();
+        to_wake
+    }
+
+    /// The row of the pair `(a, b)` with `contact` and normal velocity
+    /// `vn`, warm-started with `warm`, and its bounce if it bounces (its
+    /// `row` index left for the caller to set).
+    #[inline(always)]
+    fn row(
+        &self,
+        (a, body_a): (u32, &Body<S>),
+        (b, body_b): (u32, &Body<S>),
+        contact: Contact<S>,
+        vn: S,
+        warm: (S, S),
+        effective: S,
+    ) -> (ContactConstraint<S>, Option<BounceCandidate<S>>) {
+        let (h, inverse_h, gravity) = (self.h, self.inverse_h, self.gravity);
+        let (wa, wb) = (
+            self.inverse_masses[a as usize],
+            self.inverse_masses[b as usize],
+        );
+        // Geometric mean of the frictions (exact, and sqrt-free, when
+        // they are equal, which is the common case).
+        let friction = if body_a.friction == body_b.friction {
+            body_a.friction
+        } else {
+            body_a.friction.mul(body_b.friction).sqrt()
+        };
+        let restitution = body_a.restitution.max(body_b.restitution);
+        let mut constraint = ContactConstraint::new(
+            a,
+            b,
+            contact.normal,
+            contact.separation,
+            (wa, wb),
+            effective,
+            friction,
+            warm,
+        );
+        // Speculative only in the solve; the bounce comes after the
+        // position update.
+        constraint.prepare_target(vn, S::ZERO, self.restitution_threshold, h, inverse_h);
+        let meets = vn.neg().mul(h) >= contact.separation;
+        let bounce = (restitution.is_positive() && vn < self.restitution_threshold.neg() && meets)
+            .then(|| {
                 // Gravity acts on awake dynamic bodies only (scaled).
                 let accel = |body: &Body<S>| {
                     if body.is_simulated_dynamic() {
@@ -403,18 +484,194 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                         Vec2::ZERO
                     }
                 };
-                bounces.push(BounceCandidate {
-                    row: u32::try_from(rows.len()).unwrap_or(u32::MAX),
+                BounceCandidate {
+                    row: 0,
                     approach: vn,
                     accel_n: (accel(body_b) - accel(body_a)).dot(contact.normal),
                     restitution,
-                });
-            }
-            rows.push(constraint);
+                }
+            });
+        (constraint, bounce)
+    }
+
+    /// The second look at the pairs whose straight sweep was not the whole
+    /// story (`collision::deflected_sweep`), once every row that meets is
+    /// known: a straight hit `(row, t)` is re-aimed at the impact of the
+    /// turned motion when an immovable body turns one of the pair earlier;
+    /// a straight miss `(a, b)` whose body is turned into the other gets
+    /// its row after all (inserted in pair order; the bounces' row indices
+    /// follow). Sleepers such a row reaches go to `to_wake`.
+    #[allow(clippy::too_many_arguments)]
+    fn turned_rows<'b>(
+        &self,
+        body: &impl Fn(u32) -> Option<&'b Body<S>>,
+        scratch: &mut NarrowScratch<S>,
+        rows: &mut Vec<ContactConstraint<S>>,
+        bounces: &mut Vec<BounceCandidate<S>>,
+        to_wake: &mut Vec<u32>,
+    ) where
+        S: 'b,
+    {
+        let (h, slop) = (self.h, self.linear_slop);
+        // Only a pair with a body that meets something (an immovable body,
+        // for a hit) can be turned; mark those bodies (`WANTED`).
+        let NarrowScratch {
+            flags,
+            missed,
+            hits,
+            meeting,
+            restored,
+            moved,
+            new_bounces,
+            spare_rows,
+        } = scratch;
+        let flag = |slot: u32| flags.get(slot as usize).copied().unwrap_or(0);
+        hits.retain(|&(index, _)| {
+            rows.get(index)
+                .is_some_and(|r| (flag(r.a) | flag(r.b)) & MEETS_IMMOVABLE != 0)
+        });
+        missed.retain(|&(a, b)| (flag(a) | flag(b)) & MEETS != 0);
+        if hits.is_empty() && missed.is_empty() {
+            return;
         }
-        to_wake.sort_unstable();
-        to_wake.dedup();
-        to_wake
+        for slot in missed
+            .iter()
+            .flat_map(|&(a, b)| [a, b])
+            .chain(hits.iter().flat_map(|&(i, _)| [rows[i].a, rows[i].b]))
+        {
+            if let Some(f) = flags.get_mut(slot as usize) {
+                *f |= WANTED;
+            }
+        }
+        let wanted = |slot: u32| flags.get(slot as usize).is_some_and(|f| f & WANTED != 0);
+        // Who meets whom this substep (for the wanted bodies): the rows
+        // that close within it.
+        meeting.reset(self.velocities.len());
+        for row in rows.iter() {
+            let (want_a, want_b) = (wanted(row.a), wanted(row.b));
+            if !(want_a || want_b) {
+                continue;
+            }
+            let (Some(&va), Some(&vb)) = (
+                self.velocities.get(row.a as usize),
+                self.velocities.get(row.b as usize),
+            ) else {
+                continue;
+            };
+            let vn = (vb - va).dot(row.normal);
+            if vn.is_negative() && vn.neg().mul(h) >= row.separation {
+                meeting.link(row, (want_a, want_b));
+            }
+        }
+        let meeting = &meeting;
+        let side = |slot: u32| {
+            Some(Side {
+                slot,
+                body: body(slot)?,
+                velocity: *self.velocities.get(slot as usize)?,
+                inverse_mass: *self.inverse_masses.get(slot as usize)?,
+            })
+        };
+        let row_of = |a: Side<'b, S>, b: Side<'b, S>, contact: Contact<S>, warm| {
+            let vn = (b.velocity - a.velocity).dot(contact.normal);
+            let effective = effective_mass(a.inverse_mass, b.inverse_mass);
+            self.row(
+                (a.slot, a.body),
+                (b.slot, b.body),
+                contact,
+                vn,
+                warm,
+                effective,
+            )
+        };
+        for &(index, t) in hits.iter() {
+            let Some(row) = rows.get(index) else { continue };
+            let (Some(a), Some(b)) = (side(row.a), side(row.b)) else {
+                continue;
+            };
+            let Some(turned) =
+                earlier_turn(a, b, t, meeting, self.inverse_masses, self.velocities, h)
+            else {
+                continue;
+            };
+            let row = &rows[index];
+            // A row that now touches keeps the warm start it was given.
+            let warm = if turned.separation <= slop {
+                (row.normal_impulse, row.tangent_impulse)
+            } else {
+                (S::ZERO, S::ZERO)
+            };
+            let (constraint, bounce) = row_of(a, b, turned, warm);
+            rows[index] = constraint;
+            let row_id = u32::try_from(index).unwrap_or(u32::MAX);
+            let at = bounces.partition_point(|c| c.row < row_id);
+            let had = bounces.get(at).is_some_and(|c| c.row == row_id);
+            match (bounce, had) {
+                (Some(mut bounce), true) => {
+                    bounce.row = row_id;
+                    bounces[at] = bounce;
+                }
+                (Some(mut bounce), false) => {
+                    bounce.row = row_id;
+                    bounces.insert(at, bounce);
+                }
+                (None, true) => {
+                    bounces.remove(at);
+                }
+                (None, false) => {}
+            }
+        }
+        restored.clear();
+        for &(a, b) in missed.iter() {
+            let (Some(side_a), Some(side_b)) = (side(a), side(b)) else {
+                continue;
+            };
+            let Some(turned) = deflected_impact(side_a, side_b, meeting, self.velocities, h) else {
+                continue;
+            };
+            for s in [side_a, side_b] {
+                if s.body.kind == BodyKind::Dynamic && !s.body.awake {
+                    to_wake.push(s.slot);
+                }
+            }
+            restored.push(row_of(side_a, side_b, turned, (S::ZERO, S::ZERO)));
+        }
+        if restored.is_empty() || !to_wake.is_empty() {
+            return;
+        }
+        // Merge the restored rows (in pair order) into the rows (in pair
+        // order); `moved[i]` is old row `i`'s new index.
+        spare_rows.clear();
+        core::mem::swap(rows, spare_rows);
+        moved.clear();
+        new_bounces.clear();
+        let mut restored = restored.drain(..).peekable();
+        let mut place =
+            |rows: &mut Vec<ContactConstraint<S>>,
+             (constraint, bounce): (ContactConstraint<S>, Option<BounceCandidate<S>>)| {
+                if let Some(mut bounce) = bounce {
+                    bounce.row = u32::try_from(rows.len()).unwrap_or(u32::MAX);
+                    new_bounces.push(bounce);
+                }
+                rows.push(constraint);
+            };
+        for row in spare_rows.drain(..) {
+            while let Some(next) = restored.next_if(|(r, _)| (r.a, r.b) < (row.a, row.b)) {
+                place(rows, next);
+            }
+            moved.push(u32::try_from(rows.len()).unwrap_or(u32::MAX));
+            rows.push(row);
+        }
+        for next in restored {
+            place(rows, next);
+        }
+        for bounce in bounces.iter_mut() {
+            if let Some(&to) = moved.get(bounce.row as usize) {
+                bounce.row = to;
+            }
+        }
+        bounces.append(new_bounces);
+        bounces.sort_unstable_by_key(|c| c.row);
     }
 }
 

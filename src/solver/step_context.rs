@@ -71,6 +71,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// Contact rows of this substep that may bounce (see
     /// `dynamics::restitution`).
     pub(crate) bounce_candidates: Vec<BounceCandidate<S>>,
+    /// The narrow phase's second look at turned sweeps (working memory).
+    pub(crate) narrow_scratch: crate::collision::NarrowScratch<S>,
     /// Slots whose displacement a bounce grew, with the displacement
     /// before it (the start of the rebound motion) and the bounce's instant.
     pub(crate) rebounds: Vec<Rebound<S>>,

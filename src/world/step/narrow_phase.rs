@@ -17,6 +17,7 @@ impl<S: Scalar> World<S> {
             inverse_masses,
             constraints,
             bounce_candidates,
+            narrow_scratch,
             ..
         } = &mut self.step_context;
         let narrow_phase = NarrowPhase {
@@ -36,6 +37,7 @@ impl<S: Scalar> World<S> {
             |i| slots[i as usize].body.as_ref(),
             constraints,
             bounce_candidates,
+            narrow_scratch,
         )
     }
 }
