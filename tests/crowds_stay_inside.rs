@@ -1,12 +1,11 @@
 //! Nothing is squeezed out of a closed box: 300 circles and boxes of random
 //! sizes (radius or half extents 0.05–0.24) spawned on a grid filling the
-//! lower part of an 8 × 16 room of fixed walls 0.1 or 0.02 thick fall into a
-//! heap; under g = 10 and g = 100, with every tenth body 1000× heavier
-//! (density) than the rest (under g = 10; the heavy crowd under g = 100 is
-//! not settled yet), and in rooms at two corners of the world's
-//! bounds (±32 700), no body ever reaches past a wall's inner face by more
-//! than the linear slop, at any tick of 8 s (3 s in debug; the heaps are
-//! formed and asleep within about 2 s).
+//! lower part of an 8 × 16 room of fixed walls 2, 0.1 or 0.02 thick fall into
+//! a heap; under g = 10 and g = 100, with every tenth body 100× or 1000×
+//! heavier (density) than the rest, and in rooms at two corners of the
+//! world's bounds (±32 700), no body ever reaches past a wall's inner face by
+//! more than the linear slop, at any tick of 8 s (3 s in debug; the heaps are
+//! formed within about 2 s).
 //!
 //! The physics: the walls are fixed, so no pressure of the crowd can move
 //! them or push a body into them; a contact at rest may overlap by up to
@@ -16,6 +15,13 @@
 //! reach, so 1e-9 is added. A wall 0.02 thick is crossed by a body moving 1.2 units/s in one
 //! tick, so the thin rooms also check that a body pressed against a wall is
 //! held by its contact, not just by the wall's depth.
+//!
+//! The heavy crowds under g = 100 are the hard case (issue 13, N7): a light
+//! body wedged between heavy ones leaves the velocity solve at hundreds of
+//! units/s (the wedge turns the heavy bodies' approach into a squirt), far
+//! beyond the motion its contacts were looked for at; before the motion the
+//! solve adds was cut at the room's walls, 1–9 bodies of each such room
+//! went through walls even 2 thick and flew to the world's bound.
 //!
 //! Run with `--nocapture` to see the figures.
 
@@ -37,7 +43,7 @@ fn filled_room(
     centre: (f64, f64),
     wall: f64,
     g: f64,
-    heavy: bool,
+    heavy: f64,
     seed: u64,
 ) -> (World, Vec<BodyId>) {
     let mut world = World::new(WorldSettings {
@@ -72,8 +78,8 @@ fn filled_room(
                 Shape::aabb(vec2(size, rng.range(0.05, 0.24)))
             };
             let mut def = BodyDef::dynamic(shape).position(vec2(centre.0 + x, centre.1 + y));
-            if heavy && k % 10 == 0 {
-                def = def.density(fx(1000.0));
+            if heavy > 1.0 && k % 10 == 0 {
+                def = def.density(fx(heavy));
             }
             world.add_body(def).expect("body")
         })
@@ -81,8 +87,9 @@ fn filled_room(
     (world, bodies)
 }
 
-/// A room: centre, wall thickness, g, every tenth body heavy, seed.
-type Room = ((f64, f64), f64, f64, bool, u64);
+/// A room: centre, wall thickness, g, density of every tenth body (1: all
+/// equal), seed.
+type Room = ((f64, f64), f64, f64, f64, u64);
 
 /// How far any body reaches past the room's inner faces (negative: inside).
 fn worst_reach(world: &World, bodies: &[BodyId], centre: (f64, f64)) -> f64 {
@@ -102,15 +109,31 @@ fn worst_reach(world: &World, bodies: &[BodyId], centre: (f64, f64)) -> f64 {
 
 #[test]
 fn no_body_is_squeezed_out_of_a_closed_room() {
-    let rooms: [Room; 6] = [
-        ((0.0, 0.0), 0.1, 10.0, false, 1),
-        ((0.0, 0.0), 0.1, 100.0, false, 2),
-        ((0.0, 0.0), 0.02, 10.0, false, 4),
-        ((0.0, 0.0), 0.02, 100.0, false, 5),
-        ((32_700.0, 32_700.0), 0.1, 10.0, false, 6),
-        ((-32_700.0, -32_700.0), 0.1, 10.0, true, 7),
+    let rooms: &[Room] = &[
+        ((0.0, 0.0), 0.1, 10.0, 1.0, 1),
+        ((0.0, 0.0), 0.1, 100.0, 1.0, 2),
+        ((0.0, 0.0), 0.02, 10.0, 1.0, 4),
+        ((0.0, 0.0), 0.02, 100.0, 1.0, 5),
+        ((32_700.0, 32_700.0), 0.1, 10.0, 1.0, 6),
+        ((-32_700.0, -32_700.0), 0.1, 10.0, 1000.0, 7),
+        // Heavy crowds under g = 100 (N7; seeds 5, 8, 9 squeezed bodies
+        // out, walls 2 thick included).
+        ((0.0, 0.0), 0.1, 100.0, 1000.0, 8),
+        ((0.0, 0.0), 2.0, 100.0, 1000.0, 5),
+        ((0.0, 0.0), 0.1, 100.0, 1000.0, 9),
+        ((0.0, 0.0), 0.02, 100.0, 1000.0, 5),
+        ((0.0, 0.0), 0.02, 100.0, 100.0, 10),
+        ((0.0, 0.0), 0.1, 100.0, 1000.0, 11),
+        ((32_700.0, -32_700.0), 0.1, 100.0, 1000.0, 12),
+        ((0.0, 0.0), 2.0, 100.0, 100.0, 13),
     ];
-    for (centre, wall, g, heavy, seed) in rooms {
+    // Debug runs (the test profile is slow) check the first 8 rooms.
+    let checked = if cfg!(debug_assertions) {
+        8
+    } else {
+        rooms.len()
+    };
+    for &(centre, wall, g, heavy, seed) in &rooms[..checked] {
         let (mut world, bodies) = filled_room(centre, wall, g, heavy, seed);
         let mut worst = f64::MIN;
         for tick in 1..=TICKS {

@@ -27,6 +27,26 @@ pub(crate) struct StepContext<S: Scalar> {
     /// Inverse mass of each slot as the solver sees it (zero for anything
     /// that is not an awake dynamic body).
     pub(crate) inverse_masses: Vec<S>,
+    /// Velocity of each slot as the narrow phase saw it (before springs and
+    /// the contact solve), for [`crate::world`]'s cut of motion the solve
+    /// sent beyond where contacts were looked for.
+    pub(crate) predicted_velocities: Vec<Vec2<S>>,
+    /// Slots (ascending) whose solved motion left their predicted motion
+    /// by more than the margin allows (working memory of that cut).
+    pub(crate) punched: Vec<u32>,
+    /// The punched bodies' regions beyond their proxies and the immovable
+    /// proxies (working memory of that cut).
+    pub(crate) escape_proxies: Vec<Proxy<S>>,
+    /// A broad phase of its own for those (its x order is of that set).
+    pub(crate) escape_broad_phase: BroadPhase,
+    /// Pairs of a punched body and an immovable one found beyond the
+    /// punched body's proxy (sorted; none of them in `pairs`).
+    pub(crate) escape_pairs: Vec<(u32, u32)>,
+    /// Per slot: whether it is in `punched` (false for every other slot).
+    pub(crate) punched_mark: Vec<bool>,
+    /// `(punched body, immovable body)` pairs without a contact row: what
+    /// the punched bodies are stopped at (working memory of that cut).
+    pub(crate) punched_obstacles: Vec<(u32, u32)>,
     /// Position change of each slot during the substep.
     pub(crate) displacements: Vec<Vec2<S>>,
     /// Union-find parents for islands.

@@ -25,6 +25,8 @@ impl<S: Scalar> World<S> {
                 any_bullet |= body.bullet && body.is_simulated_dynamic();
             }
         }
+        self.cut_punched_motion(h);
+        let context = &mut self.step_context;
         // Most worlds have no bullet: skip the pass over every pair.
         if !any_bullet {
             return;

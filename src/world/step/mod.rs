@@ -13,9 +13,9 @@
 //! | narrow phase (pairs → contact rows, waking sleepers) | [`narrow_phase`] |
 //! | rope rows | [`constraints`] |
 //! | grouping, warm start, velocity iterations | [`solve`] |
-//! | integrate (bullets' time of impact) | [`integrate`] |
+//! | integrate (bullets' time of impact; punched bodies stopped at immovable ones) | [`integrate`], [`punched_motion`] |
 //! | position iterations | [`solve`] |
-//! | bound corrections, out of immovable bodies, bounces, rebound sweep, ropes settled | [`contacts`] |
+//! | bound corrections, out of immovable bodies (punched bodies again), bounces, rebound sweep, ropes settled | [`contacts`], [`punched_motion`] |
 //! | write back (bounds: freeze) | [`integrate`] |
 //! | contact cache, rope impulses | [`contact_cache`], [`constraints`] |
 //! | per tick: sleep | [`sleep`] |
@@ -31,6 +31,7 @@ pub(crate) mod contacts;
 mod events;
 mod integrate;
 mod narrow_phase;
+mod punched_motion;
 mod sleep;
 mod solve;
 mod velocities;
@@ -97,6 +98,7 @@ impl<S: Scalar> World<S> {
                 self.wake_index(index);
             }
         }
+        self.remember_predicted_velocities();
         self.apply_springs(h);
         self.build_rope_rows(h, inverse_h);
         self.group_and_warm_start(h);
@@ -106,6 +108,7 @@ impl<S: Scalar> World<S> {
         self.solve_positions(h);
         self.bound_corrections(h);
         self.project_out_of_immovable();
+        self.cut_punched_at_immovable_partners();
         self.bounce(h);
         self.sweep_rebounds(h);
         self.settle_ropes();
