@@ -33,9 +33,9 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7d009b781f2d0f38),
     ("pyramid", 0xc38e0c9d6a324827),
-    ("balls", 0x37d3c0b9b9f57ecd),
+    ("balls", 0xc72955192bc27ec7),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0x98f8ced452be02bb),
+    ("mixed", 0x3f82fa8cf792472a),
 ];
 // END GOLDEN
 

@@ -473,8 +473,9 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         // Speculative only in the solve; the bounce comes after the
         // position update.
         constraint.prepare_target(vn, S::ZERO, self.restitution_threshold, h, inverse_h);
-        let meets = vn.neg().mul(h) >= contact.separation;
-        let bounce = (restitution.is_positive() && vn < self.restitution_threshold.neg() && meets)
+        // A candidate for a bounce: an approach faster than the threshold,
+        // with a positive restitution, that may meet within the substep.
+        let bounce = (restitution.is_positive() && vn < self.restitution_threshold.neg())
             .then(|| {
                 // Gravity acts on awake dynamic bodies only (scaled).
                 let accel = |body: &Body<S>| {
@@ -484,13 +485,32 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                         Vec2::ZERO
                     }
                 };
-                BounceCandidate {
+                let (accel_a, accel_b) = (accel(body_a), accel(body_b));
+                // May the pair meet within the substep? `−v_n·h ≥ s` along
+                // the velocities after gravity, plus the part of the gravity
+                // step a contact may hold back (a crate resting on the
+                // ground falls `g·h²` less than its velocity says, see
+                // `restitution::supported_accelerations`): at most
+                // `(|a_a|₁ + |a_b|₁)·h²`. The exact test is the bounce's own
+                // (`restitution::bounce_end`), after the solve.
+                let held = accel_a
+                    .x
+                    .abs()
+                    .add(accel_a.y.abs())
+                    .add(accel_b.x.abs())
+                    .add(accel_b.y.abs())
+                    .mul(h)
+                    .mul(h);
+                let meets = vn.neg().mul(h).add(held) >= contact.separation;
+                meets.then_some(BounceCandidate {
                     row: 0,
                     approach: vn,
-                    accel_n: (accel(body_b) - accel(body_a)).dot(contact.normal),
+                    accel_a,
+                    accel_b,
                     restitution,
-                }
-            });
+                })
+            })
+            .flatten();
         (constraint, bounce)
     }
 

@@ -43,7 +43,10 @@ pub(crate) fn collect_rebound_partners<S: Scalar>(
             .map(|k| k as usize)
     };
     // Counts, then exclusive prefix sums as each list's write cursor.
+    // Room for every slot rebounding and every pair twice, so a step after
+    // the warm-up does not allocate when more bodies rebound than before.
     starts.clear();
+    starts.reserve(slot_count + 1);
     starts.resize(rebounds.len() + 1, 0);
     for &(a, b) in pairs {
         for k in [rebound(a), rebound(b)].into_iter().flatten() {
@@ -54,6 +57,7 @@ pub(crate) fn collect_rebound_partners<S: Scalar>(
         starts[k] += starts[k - 1];
     }
     partners.clear();
+    partners.reserve(pairs.len().saturating_mul(2));
     partners.resize(starts[rebounds.len()], 0);
     // `starts[k]` is advanced as list k fills; it ends at list k + 1's
     // start and is moved back below.
@@ -121,6 +125,7 @@ mod tests {
                 slot,
                 start: Vec2::ZERO,
                 time: Fx::ZERO,
+                order: 0,
             })
             .collect();
         let mut out = ReboundPartners::default();

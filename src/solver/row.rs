@@ -251,6 +251,26 @@ pub(crate) fn solve_velocity_row<S: Scalar>(
     }
 }
 
+/// The normal half of [`solve_velocity_row`] (the bounce solve,
+/// [`crate::solver::restitution`], moves normal impulses only).
+#[inline]
+pub(crate) fn solve_normal_row<S: Scalar>(
+    c: &mut ContactConstraint<S>,
+    velocities: &mut [Vec2<S>],
+) {
+    let vn = (velocities[c.b as usize] - velocities[c.a as usize]).dot(c.normal);
+    let old_n = c.normal_impulse;
+    let shortfall = c.target_velocity.sub(vn);
+    if old_n == S::ZERO && !shortfall.is_positive() {
+        return;
+    }
+    c.normal_impulse = old_n.add(shortfall.mul(c.effective_mass)).max(S::ZERO);
+    let dn = c.normal_impulse.sub(old_n);
+    if dn != S::ZERO {
+        apply_row(c, dn, S::ZERO, velocities);
+    }
+}
+
 /// Position correction of one row on the substep's displacements.
 ///
 /// The current separation is `s = s0 + (Δb - Δa)·n` (exact for translation

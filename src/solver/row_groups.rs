@@ -225,6 +225,17 @@ impl RowGroups {
         }
     }
 
+    /// The group of row `r` (as of the last regroup), if `r` is a row.
+    pub(crate) fn group_of_row(&self, r: usize) -> Option<usize> {
+        self.row_group.get(r).map(|&g| g as usize)
+    }
+
+    /// Group `g`'s rows and how the velocity sweeps solve it.
+    pub(crate) fn group(&self, g: usize) -> Option<(&[usize], &GroupSolve)> {
+        let (start, end) = (*self.starts.get(g)?, *self.starts.get(g + 1)?);
+        Some((self.rows.get(start..end)?, &self.modes.get(g)?.0))
+    }
+
     /// The groups in order, each a slice of row indices.
     pub(crate) fn iter(&self) -> impl Iterator<Item = &[usize]> {
         self.starts.windows(2).map(|w| &self.rows[w[0]..w[1]])

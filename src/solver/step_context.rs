@@ -1,7 +1,7 @@
 //! The step context: working buffers of a step, reused from step to step so that a world in
 //! steady state allocates nothing. Derived data: never part of the state.
 
-use super::restitution::{BounceCandidate, Rebound};
+use super::restitution::{BounceCandidate, BounceScratch, Rebound};
 use crate::collision::CachedContact;
 use crate::collision::{BroadPhase, Proxy};
 use crate::constraints::spring_solve::SpringScratch;
@@ -98,6 +98,8 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) rebounds: Vec<Rebound<S>>,
     /// The broad-phase partners of each rebounding slot.
     pub(crate) rebound_partners: ReboundPartners,
+    /// Working memory of the bounce solve.
+    pub(crate) bounce: BounceScratch<S>,
     /// Displacements before the position pass (to bound its corrections).
     pub(crate) displacements_before_correction: Vec<Vec2<S>>,
     /// The displacements where the rope settling rounds stood best (the

@@ -15,7 +15,7 @@ use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
 use crate::solver::flight_reflection::{Flight, Impact, reflect_in_flight};
 use crate::solver::rebound_partners::collect_rebound_partners;
-use crate::solver::restitution::apply_bounces;
+use crate::solver::restitution::{BounceSolver, apply_bounces};
 use crate::solver::row::ContactConstraint;
 use crate::world::{Slot, World, WorldSettings};
 
@@ -51,15 +51,40 @@ impl<S: Scalar> World<S> {
     /// the instant of contact; the bodies whose motion grew are listed for
     /// [`World::sweep_rebounds`].
     pub(super) fn bounce(&mut self, h: S) {
-        let context = &mut self.step_context;
-        context.rebounds.clear();
+        let StepContext {
+            constraints,
+            contact_groups,
+            bounce_candidates,
+            bounce,
+            velocities,
+            displacements,
+            rebounds,
+            rope_block,
+            tree,
+            ..
+        } = &mut self.step_context;
+        rebounds.clear();
+        // Each body is listed at most once per bounce group (twice per row
+        // it bounces on in a large pile), and belongs to one group: room for
+        // every slot keeps a step after the warm-up from allocating when
+        // more bodies rebound than before.
+        rebounds.reserve(velocities.len());
+        let solver = BounceSolver {
+            groups: contact_groups,
+            sweeps: self.settings.velocity_iterations,
+            slop: self.settings.linear_slop,
+            block: rope_block,
+            tree,
+        };
         apply_bounces(
-            &context.constraints,
-            &context.bounce_candidates,
+            constraints,
+            bounce_candidates,
             h,
-            &mut context.velocities,
-            &mut context.displacements,
-            &mut context.rebounds,
+            solver,
+            bounce,
+            velocities,
+            displacements,
+            rebounds,
         );
     }
 
@@ -302,8 +327,13 @@ impl<S: Scalar> World<S> {
         let context = &mut self.step_context;
         // One sweep per body: keep each slot's first bounce (its earliest
         // displacement is the start of its rebound), at the earliest
-        // instant of its bounces.
-        context.rebounds.sort_by_key(|r| r.slot);
+        // instant of its bounces. Listed in push order within a slot (an
+        // unstable sort needs no buffer; a stable one of thousands of
+        // rebounding bodies allocated every step).
+        for (k, rebound) in context.rebounds.iter_mut().enumerate() {
+            rebound.order = u32::try_from(k).unwrap_or(u32::MAX);
+        }
+        context.rebounds.sort_unstable_by_key(|r| (r.slot, r.order));
         context.rebounds.dedup_by(|later, first| {
             let same = later.slot == first.slot;
             if same {
