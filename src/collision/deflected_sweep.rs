@@ -60,7 +60,6 @@
 use crate::dynamics::Body;
 use crate::geometry::{Contact, Toi};
 use crate::math::{Scalar, Vec2};
-use crate::solver::restitution::BounceCandidate;
 use crate::solver::row::ContactConstraint;
 
 use super::narrow_phase::{contact_between, shape_toi};
@@ -115,28 +114,6 @@ impl<S: Scalar> MeetingRows<S> {
             Some((other, normal, gap))
         })
     }
-}
-
-/// The second look's working memory, kept across substeps so a step does
-/// not allocate once warm.
-#[derive(Clone, Debug, Default)]
-pub(crate) struct NarrowScratch<S: Scalar> {
-    /// Per slot: `MEETS`, `MEETS_IMMOVABLE`, `WANTED` bits.
-    pub(crate) flags: Vec<u8>,
-    /// Pairs whose straight sweep missed.
-    pub(crate) missed: Vec<(u32, u32)>,
-    /// Rows whose straight sweep hit, with the fraction.
-    pub(crate) hits: Vec<(usize, S)>,
-    /// Who meets whom.
-    pub(crate) meeting: MeetingRows<S>,
-    /// Rows restored after a miss, with their bounces.
-    pub(crate) restored: Vec<(ContactConstraint<S>, Option<BounceCandidate<S>>)>,
-    /// New index of each old row while merging.
-    pub(crate) moved: Vec<u32>,
-    /// Bounces of the restored rows.
-    pub(crate) new_bounces: Vec<BounceCandidate<S>>,
-    /// The rows' spare buffer for the merge.
-    pub(crate) spare_rows: Vec<ContactConstraint<S>>,
 }
 
 /// One body of a pair: its slot, body, velocity and inverse mass.

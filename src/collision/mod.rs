@@ -4,13 +4,15 @@ mod box_corner;
 mod broad_phase;
 mod coincident;
 mod contact_cache;
+mod covered_corner;
 mod deflected_sweep;
 mod face_past_walls;
 mod level_seam;
 mod narrow_phase;
+mod narrow_scratch;
 mod pair_sort;
 
 pub(crate) use broad_phase::{BroadPhase, Proxy, ProxyClass};
 pub(crate) use contact_cache::CachedContact;
-pub(crate) use deflected_sweep::NarrowScratch;
 pub(crate) use narrow_phase::{NarrowPhase, contact_between, shape_toi};
+pub(crate) use narrow_scratch::NarrowScratch;

@@ -8,9 +8,11 @@ use crate::geometry::{
 use crate::math::{Scalar, Vec2};
 
 use super::CachedContact;
+use super::NarrowScratch;
 use super::box_corner::{box_contact, corner_apart, corner_impact};
 use super::coincident::coincident_contact;
-use super::deflected_sweep::{NarrowScratch, Side, deflected_impact, earlier_turn};
+use super::covered_corner::covered_corner;
+use super::deflected_sweep::{Side, deflected_impact, earlier_turn};
 use super::face_past_walls::face_past_walls;
 use super::level_seam::level_seam;
 use crate::dynamics::{Body, BodyKind};
@@ -48,6 +50,9 @@ const MEETS: u8 = 1;
 const MEETS_IMMOVABLE: u8 = 2;
 /// A slot of a pair the second look checks.
 const WANTED: u8 = 4;
+/// A circle with a row at the corner of an immovable box
+/// (`collision::covered_corner`).
+const COVERED: u8 = 8;
 
 /// Time of impact of shape `a` at `pa` moving by `da` against shape `b` at
 /// `pb` moving by `db` (normal from a to b).
@@ -429,6 +434,9 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         if to_wake.is_empty() && !(scratch.missed.is_empty() && scratch.hits.is_empty()) {
             self.turned_rows(&body, scratch, rows, bounces, &mut to_wake);
         }
+        if to_wake.is_empty() {
+            self.covered_corners(&body, scratch, rows, bounces);
+        }
         to_wake.sort_unstable();
         to_wake.dedup();
         to_wake
@@ -544,6 +552,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             moved,
             new_bounces,
             spare_rows,
+            ..
         } = scratch;
         let flag = |slot: u32| flags.get(slot as usize).copied().unwrap_or(0);
         hits.retain(|&(index, _)| {
@@ -621,25 +630,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             } else {
                 (S::ZERO, S::ZERO)
             };
-            let (constraint, bounce) = row_of(a, b, turned, warm);
-            rows[index] = constraint;
-            let row_id = u32::try_from(index).unwrap_or(u32::MAX);
-            let at = bounces.partition_point(|c| c.row < row_id);
-            let had = bounces.get(at).is_some_and(|c| c.row == row_id);
-            match (bounce, had) {
-                (Some(mut bounce), true) => {
-                    bounce.row = row_id;
-                    bounces[at] = bounce;
-                }
-                (Some(mut bounce), false) => {
-                    bounce.row = row_id;
-                    bounces.insert(at, bounce);
-                }
-                (None, true) => {
-                    bounces.remove(at);
-                }
-                (None, false) => {}
-            }
+            self.replace_row(index, (a, b), turned, warm, rows, bounces);
         }
         restored.clear();
         for &(a, b) in missed.iter() {
@@ -692,6 +683,167 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         }
         bounces.append(new_bounces);
         bounces.sort_unstable_by_key(|c| c.row);
+    }
+}
+
+impl<S: Scalar> NarrowPhase<'_, S> {
+    /// Replaces row `index`, of the pair `(a, b)`, by the row of `contact`
+    /// warm-started with `warm`, and its bounce (kept sorted by row).
+    fn replace_row(
+        &self,
+        index: usize,
+        (a, b): (Side<'_, S>, Side<'_, S>),
+        contact: Contact<S>,
+        warm: (S, S),
+        rows: &mut [ContactConstraint<S>],
+        bounces: &mut Vec<BounceCandidate<S>>,
+    ) {
+        let vn = (b.velocity - a.velocity).dot(contact.normal);
+        let effective = effective_mass(a.inverse_mass, b.inverse_mass);
+        let (constraint, bounce) = self.row(
+            (a.slot, a.body),
+            (b.slot, b.body),
+            contact,
+            vn,
+            warm,
+            effective,
+        );
+        rows[index] = constraint;
+        let row_id = u32::try_from(index).unwrap_or(u32::MAX);
+        let at = bounces.partition_point(|c| c.row < row_id);
+        let had = bounces.get(at).is_some_and(|c| c.row == row_id);
+        match (bounce, had) {
+            (Some(mut bounce), true) => {
+                bounce.row = row_id;
+                bounces[at] = bounce;
+            }
+            (Some(mut bounce), false) => {
+                bounce.row = row_id;
+                bounces.insert(at, bounce);
+            }
+            (None, true) => {
+                bounces.remove(at);
+            }
+            (None, false) => {}
+        }
+    }
+
+    /// Rows of a circle at the corner of an immovable box that lies on
+    /// (or behind) the face of another immovable box the circle has a face
+    /// row with are taken along that face's normal
+    /// (`collision::covered_corner`): flush tiles make one flat face.
+    fn covered_corners<'b>(
+        &self,
+        body: &impl Fn(u32) -> Option<&'b Body<S>>,
+        scratch: &mut NarrowScratch<S>,
+        rows: &mut [ContactConstraint<S>],
+        bounces: &mut Vec<BounceCandidate<S>>,
+    ) where
+        S: 'b,
+    {
+        let NarrowScratch {
+            flags,
+            corners,
+            faces,
+            ..
+        } = scratch;
+        let immovable = |i: u32| {
+            self.inverse_masses
+                .get(i as usize)
+                .is_some_and(|w| !w.is_positive())
+        };
+        let is_box = |i: u32| body(i).is_some_and(|b| matches!(b.shape, Shape::Aabb { .. }));
+        let is_circle = |i: u32| body(i).is_some_and(|b| matches!(b.shape, Shape::Circle { .. }));
+        // The candidates: oblique rows between a circle and an immovable
+        // box (the cheap tests first: most oblique rows are between two
+        // movable bodies).
+        corners.clear();
+        for (index, row) in rows.iter().enumerate() {
+            if row.normal.x == S::ZERO || row.normal.y == S::ZERO {
+                continue;
+            }
+            let circle = match (immovable(row.a), immovable(row.b)) {
+                (false, true) => row.a,
+                (true, false) => row.b,
+                _ => continue,
+            };
+            let corner_box = if circle == row.a { row.b } else { row.a };
+            if is_circle(circle) && is_box(corner_box) {
+                corners.push((circle, corner_box, index));
+                if let Some(f) = flags.get_mut(circle as usize) {
+                    *f |= COVERED;
+                }
+            }
+        }
+        if corners.is_empty() {
+            return;
+        }
+        // The face rows of those circles with immovable boxes: (circle,
+        // box, normal from the circle to the box), sorted by circle.
+        faces.clear();
+        let covered = |i: u32| flags.get(i as usize).is_some_and(|f| f & COVERED != 0);
+        for row in rows.iter() {
+            if row.normal.x != S::ZERO && row.normal.y != S::ZERO {
+                continue;
+            }
+            let (circle, face_box, normal) = if covered(row.a) && immovable(row.b) {
+                (row.a, row.b, row.normal)
+            } else if covered(row.b) && immovable(row.a) {
+                (row.b, row.a, -row.normal)
+            } else {
+                continue;
+            };
+            if is_box(face_box) {
+                faces.push((circle, face_box, normal));
+            }
+        }
+        faces.sort_unstable_by_key(|f| (f.0, f.1));
+        let aabb = |b: &Body<S>| Aabb::new(b.position, b.shape.half_extents());
+        for &(circle, corner_box, index) in corners.iter() {
+            let (Some(c), Some(a)) = (body(circle), body(corner_box)) else {
+                continue;
+            };
+            let Shape::Circle { radius } = c.shape else {
+                continue;
+            };
+            let velocity = |i: u32| self.velocities.get(i as usize).copied();
+            let first = faces.partition_point(|f| f.0 < circle);
+            let covering = faces[first..]
+                .iter()
+                .take_while(|f| f.0 == circle)
+                .filter(|f| f.1 != corner_box && velocity(f.1) == velocity(corner_box))
+                .find_map(|&(_, face_box, normal)| {
+                    covered_corner(
+                        c.position,
+                        radius,
+                        &aabb(a),
+                        &aabb(body(face_box)?),
+                        normal,
+                        self.linear_slop,
+                    )
+                });
+            let Some(mut contact) = covering else {
+                continue;
+            };
+            let row = &rows[index];
+            // The row's normal runs from `row.a` to `row.b`.
+            if row.a != circle {
+                contact.normal = -contact.normal;
+            }
+            let side = |slot: u32| {
+                Some(Side {
+                    slot,
+                    body: body(slot)?,
+                    velocity: *self.velocities.get(slot as usize)?,
+                    inverse_mass: *self.inverse_masses.get(slot as usize)?,
+                })
+            };
+            let (Some(sa), Some(sb)) = (side(row.a), side(row.b)) else {
+                continue;
+            };
+            let warm = (row.normal_impulse, row.tangent_impulse);
+            self.replace_row(index, (sa, sb), contact, warm, rows, bounces);
+        }
     }
 }
 
