@@ -33,7 +33,7 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7d009b781f2d0f38),
     ("pyramid", 0xc38e0c9d6a324827),
-    ("balls", 0xc72955192bc27ec7),
+    ("balls", 0xeb75b7fff6c7bcb0),
     ("bullets", 0x1fc541d2ff7bd5d2),
     ("mixed", 0x3f82fa8cf792472a),
 ];

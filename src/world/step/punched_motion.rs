@@ -201,6 +201,7 @@ impl<S: Scalar> World<S> {
     /// normal is taken out. Called from [`World::cut_punched_motion`] and
     /// again after [`World::project_out_of_immovable`].
     pub(super) fn cut_punched_at_immovable_partners(&mut self) {
+        let half_slop = self.settings.linear_slop.half();
         let context = &mut self.step_context;
         for &(mover, other) in &context.punched_obstacles {
             let (Some(mb), Some(ob)) = (
@@ -223,10 +224,24 @@ impl<S: Scalar> World<S> {
                 // whole displacement stopped a body sliding down a wall
                 // it grazed, leaving it a velocity it never moved by.
                 let into = full.dot(normal);
-                if into.is_positive() {
-                    let past = into.sub(into.mul(t));
-                    context.displacements[mover as usize] = full - normal.scale(past);
+                let past = if into.is_positive() {
+                    into.sub(into.mul(t))
+                } else {
+                    S::ZERO
+                };
+                // A body that would end at most half the slop past the
+                // obstacle ends where a resting contact may (depth below
+                // the slop): it is left as the solve made it, and the
+                // next substep's narrow phase gives the pair a row
+                // (touching is within the margin), from which a bounce
+                // is timed. Stopping it there took out the speculative
+                // approach a row with a flush neighbour tile had allowed
+                // (the body reaches the contact at t = 1), and a ball
+                // landing on tiles lost most of its bounce.
+                if past <= half_slop {
+                    continue;
                 }
+                context.displacements[mover as usize] = full - normal.scale(past);
                 // The impact is inelastic: the approach along the
                 // normal (from the mover to the obstacle) is taken
                 // out.
