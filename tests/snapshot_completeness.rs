@@ -195,7 +195,9 @@ fn worlds_with_constraints_restore_bit_identically() {
 /// is working memory kept between solves: a restored world starts without
 /// it, so the solve's result may not depend on it (a world_commands finding:
 /// a stiff radial spring on a light body diverged after a restore when a
-/// radial solve started on an earlier step's factor). Chains of 1, 3 and 12
+/// radial solve started on an earlier step's factor; the input is kept in
+/// `tests/data/fuzz/world_commands/stiff-radial-spring-restored-copies-diverge`
+/// and among the target's seeds). Chains of 1, 3 and 12
 /// links from a fixed point, released level under gravity, at ω·h from 3 to
 /// about 300 (mass 0.01 per link, k = m·(ω·h/h)²), with an end body 1× and
 /// 100× a link; restored at ticks from the first steps to mid-swing.
