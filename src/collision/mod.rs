@@ -3,6 +3,7 @@
 mod box_corner;
 mod broad_phase;
 mod coincident;
+mod confined_pair;
 mod contact_cache;
 mod covered_corner;
 mod deflected_sweep;

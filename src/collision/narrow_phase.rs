@@ -5,12 +5,13 @@ use crate::geometry::{
     Aabb, Circle, Contact, Shape, Toi, contact_aabb_aabb, contact_aabb_circle, contact_circle_aabb,
     contact_circle_circle, toi_aabb_aabb, toi_circle_aabb, toi_circle_circle,
 };
-use crate::math::{Scalar, Vec2};
+use crate::math::{Scalar, Vec2, WideScalar};
 
 use super::CachedContact;
 use super::NarrowScratch;
 use super::box_corner::{box_contact, corner_apart, corner_impact};
 use super::coincident::coincident_contact;
+use super::confined_pair::confined_contact;
 use super::covered_corner::covered_corner;
 use super::deflected_sweep::{Side, deflected_impact, earlier_turn};
 use super::face_past_walls::face_past_walls;
@@ -53,6 +54,28 @@ const WANTED: u8 = 4;
 /// A circle with a row at the corner of an immovable box
 /// (`collision::covered_corner`).
 const COVERED: u8 = 8;
+/// A movable body has a face row with an immovable body lying along −x
+/// from it (`collision::confined_pair`); and along +x, −y, +y.
+const WALL_NEG_X: u8 = 16;
+/// See [`WALL_NEG_X`].
+const WALL_POS_X: u8 = 32;
+/// See [`WALL_NEG_X`].
+const WALL_NEG_Y: u8 = 64;
+/// See [`WALL_NEG_X`].
+const WALL_POS_Y: u8 = 128;
+
+/// The `WALL_*` bit of the axis direction `n`.
+fn wall_bit<S: Scalar>(n: Vec2<S>) -> u8 {
+    if n.x.is_negative() {
+        WALL_NEG_X
+    } else if n.x.is_positive() {
+        WALL_POS_X
+    } else if n.y.is_negative() {
+        WALL_NEG_Y
+    } else {
+        WALL_POS_Y
+    }
+}
 
 /// Time of impact of shape `a` at `pa` moving by `da` against shape `b` at
 /// `pb` moving by `db` (normal from a to b).
@@ -429,6 +452,18 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             if let Some(t) = hit_at {
                 scratch.hits.push((rows.len(), t));
             }
+            // A face row of a movable body with an immovable one: the side
+            // it lies on (`collision::confined_pair`).
+            if wa.is_positive() != wb.is_positive()
+                && (contact.normal.x == S::ZERO || contact.normal.y == S::ZERO)
+            {
+                let (slot, n) = if wa.is_positive() {
+                    (a, contact.normal)
+                } else {
+                    (b, -contact.normal)
+                };
+                scratch.flags[slot as usize] |= wall_bit(n);
+            }
             rows.push(constraint);
         }
         if to_wake.is_empty() && !(scratch.missed.is_empty() && scratch.hits.is_empty()) {
@@ -436,6 +471,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         }
         if to_wake.is_empty() {
             self.covered_corners(&body, scratch, rows, bounces);
+            self.confined_pairs(&body, scratch, rows, bounces);
         }
         to_wake.sort_unstable();
         to_wake.dedup();
@@ -843,6 +879,145 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             };
             let warm = (row.normal_impulse, row.tangent_impulse);
             self.replace_row(index, (sa, sb), contact, warm, rows, bounces);
+        }
+    }
+
+    /// Rows of two movable boxes (or circles) more than the slop deep whose overlap
+    /// the immovable bodies' face rows keep from being undone along the
+    /// row's normal are taken along the other axis
+    /// (`collision::confined_pair`).
+    #[inline(never)]
+    fn confined_pairs<'b>(
+        &self,
+        body: &impl Fn(u32) -> Option<&'b Body<S>>,
+        scratch: &mut NarrowScratch<S>,
+        rows: &mut [ContactConstraint<S>],
+        bounces: &mut Vec<BounceCandidate<S>>,
+    ) where
+        S: 'b,
+    {
+        let slop = self.linear_slop;
+        let movable = |i: u32| {
+            self.inverse_masses
+                .get(i as usize)
+                .is_some_and(|w| w.is_positive())
+        };
+        let same_kind = |a: u32, b: u32| match (body(a), body(b)) {
+            (Some(x), Some(y)) => matches!(
+                (x.shape, y.shape),
+                (Shape::Aabb { .. }, Shape::Aabb { .. })
+                    | (Shape::Circle { .. }, Shape::Circle { .. })
+            ),
+            _ => false,
+        };
+        let NarrowScratch {
+            flags,
+            confined,
+            walls,
+            ..
+        } = scratch;
+        // The candidates: rows more than twice the slop deep (resting rows
+        // sit about one slop deep, some a few ulps more) along an axis,
+        // whose bodies each have an immovable body's face row in front of
+        // them (the `WALL_*` bits set in the loop, movable bodies only);
+        // the cheap test first: deep rows are common in piles, walls on
+        // both sides of them are not.
+        let deep = slop.add(slop).neg();
+        let has = |slot: u32, n: Vec2<S>| {
+            flags
+                .get(slot as usize)
+                .is_some_and(|f| f & wall_bit(n) != 0)
+        };
+        confined.clear();
+        for (index, row) in rows.iter().enumerate() {
+            if row.separation < deep
+                && (row.normal.x == S::ZERO || row.normal.y == S::ZERO)
+                && has(row.a, -row.normal)
+                && has(row.b, row.normal)
+                && same_kind(row.a, row.b)
+            {
+                confined.push(index);
+            }
+        }
+        if confined.is_empty() {
+            return;
+        }
+        let face = |row: &ContactConstraint<S>| {
+            if row.normal.x != S::ZERO && row.normal.y != S::ZERO {
+                return None;
+            }
+            match (movable(row.a), movable(row.b)) {
+                (true, false) => Some((row.a, row.normal)),
+                (false, true) => Some((row.b, -row.normal)),
+                _ => None,
+            }
+        };
+        // The face rows with immovable bodies: (movable body, normal from
+        // it to the immovable body, gap), sorted by body.
+        walls.clear();
+        walls.extend(rows.iter().filter_map(|row| {
+            let (slot, n) = face(row)?;
+            Some((slot, n, row.separation))
+        }));
+        walls.sort_unstable_by_key(|w| w.0);
+        let walls = &*walls;
+        let room = |slot: u32, dir: Vec2<S>| {
+            let first = walls.partition_point(|w| w.0 < slot);
+            walls[first..]
+                .iter()
+                .take_while(|w| w.0 == slot)
+                .filter(|w| w.1 == dir)
+                .map(|w| w.2)
+                .reduce(|x, y| x.min(y))
+        };
+        for &index in confined.iter() {
+            let row = &rows[index];
+            let (Some(ba), Some(bb)) = (body(row.a), body(row.b)) else {
+                continue;
+            };
+            let contact = Contact {
+                normal: row.normal,
+                separation: row.separation,
+            };
+            let (a, b) = (row.a, row.b);
+            let d = bb.position - ba.position;
+            // How far apart across the normal the shapes still overlap.
+            let reach = match (ba.shape, bb.shape) {
+                (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) => {
+                    let (sum, along) = (ra.add(rb), d.dot(row.normal));
+                    // (negative under the root: zero, `sqrt_narrow`'s rule)
+                    sum.wide_mul(sum).sub(along.wide_mul(along)).sqrt_narrow()
+                }
+                _ => {
+                    let extents = ba.shape.half_extents() + bb.shape.half_extents();
+                    if row.normal.x == S::ZERO {
+                        extents.x
+                    } else {
+                        extents.y
+                    }
+                }
+            };
+            let Some(turned) = confined_contact(
+                d,
+                reach,
+                &contact,
+                |on_b, dir| room(if on_b { b } else { a }, dir),
+                slop,
+            ) else {
+                continue;
+            };
+            let side = |slot: u32| {
+                Some(Side {
+                    slot,
+                    body: body(slot)?,
+                    velocity: *self.velocities.get(slot as usize)?,
+                    inverse_mass: *self.inverse_masses.get(slot as usize)?,
+                })
+            };
+            let (Some(sa), Some(sb)) = (side(a), side(b)) else {
+                continue;
+            };
+            self.replace_row(index, (sa, sb), turned, (S::ZERO, S::ZERO), rows, bounces);
         }
     }
 }

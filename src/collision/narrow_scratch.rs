@@ -12,7 +12,7 @@ use super::deflected_sweep::MeetingRows;
 /// allocate once warm.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct NarrowScratch<S: Scalar> {
-    /// Per slot: `MEETS`, `MEETS_IMMOVABLE`, `WANTED`, `COVERED` bits
+    /// Per slot: `MEETS`, `MEETS_IMMOVABLE`, `WANTED`, `COVERED`, `WALL_*` bits
     /// (`collision::narrow_phase`).
     pub(crate) flags: Vec<u8>,
     /// Pairs whose straight sweep missed.
@@ -34,4 +34,10 @@ pub(crate) struct NarrowScratch<S: Scalar> {
     /// Face rows of those circles with immovable boxes: (circle, box,
     /// normal from the circle to the box).
     pub(crate) faces: Vec<(u32, u32, Vec2<S>)>,
+    /// Deep rows of two movable boxes or circles
+    /// (`collision::confined_pair`).
+    pub(crate) confined: Vec<usize>,
+    /// Face rows of movable bodies with immovable ones: (body, normal from
+    /// it, gap).
+    pub(crate) walls: Vec<(u32, Vec2<S>, S)>,
 }
