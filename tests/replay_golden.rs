@@ -35,7 +35,7 @@ const GOLDEN: &[(&str, u64)] = &[
     ("pyramid", 0xc38e0c9d6a324827),
     ("balls", 0xeb75b7fff6c7bcb0),
     ("bullets", 0x1fc541d2ff7bd5d2),
-    ("mixed", 0x3f82fa8cf792472a),
+    ("mixed", 0x65dae0f1c65828f9),
 ];
 // END GOLDEN
 

@@ -10,6 +10,7 @@
 
 use super::solve::rope_position_pass;
 use crate::collision::{Proxy, contact_between, shape_toi};
+use crate::dynamics::BodyKind;
 use crate::geometry::Toi;
 use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
@@ -472,6 +473,15 @@ struct ProxyReach<'a, S: Scalar> {
 }
 
 impl<S: Scalar> ProxyReach<'_, S> {
+    /// Whether the body in `slot` is a sleeping dynamic body (immovable
+    /// this substep only).
+    fn asleep(&self, slot: usize) -> bool {
+        self.slots
+            .get(slot)
+            .and_then(|s| s.body.as_ref())
+            .is_some_and(|b| b.kind == BodyKind::Dynamic && !b.awake)
+    }
+
     /// The lowest and highest displacement (per axis) of the body in
     /// `slot` that keep its box, from where it started the substep, inside
     /// its proxy; `None` for a slot without a proxy (frozen, empty).
@@ -508,13 +518,43 @@ fn project_rows_out_of_immovable<S: Scalar>(
     reach: &ProxyReach<'_, S>,
     unresolved: &mut Vec<u32>,
 ) {
+    // Rows to sleeping bodies first, rows to fixed and kinematic bodies
+    // last: the last row a body is projected along is the one it ends
+    // within the slop of, and only fixed walls must never be crossed (a
+    // sleeper is woken by the contact in the next substeps). A light body
+    // wedged at 5° between the floor and a sleeping body ended 1.9e-9
+    // beyond the slop in the floor when the sleeper's row came last.
+    for sleepers in [true, false] {
+        project_rows_pass(
+            constraints,
+            displacements,
+            slop,
+            resting,
+            reach,
+            unresolved,
+            sleepers,
+        );
+    }
+}
+
+/// The rows of [`project_rows_out_of_immovable`] whose immovable end is a
+/// sleeping body (`sleepers`) or a fixed or kinematic one (`!sleepers`).
+fn project_rows_pass<S: Scalar>(
+    constraints: &[ContactConstraint<S>],
+    displacements: &mut [Vec2<S>],
+    slop: S,
+    resting: S,
+    reach: &ProxyReach<'_, S>,
+    unresolved: &mut Vec<u32>,
+    sleepers: bool,
+) {
     for c in constraints {
         let (ia, ib) = (c.a as usize, c.b as usize);
         let (movable_a, movable_b) = (
             c.inverse_mass_a.is_positive(),
             c.inverse_mass_b.is_positive(),
         );
-        if movable_a == movable_b {
+        if movable_a == movable_b || reach.asleep(if movable_a { ib } else { ia }) != sleepers {
             continue;
         }
         let separation = c
