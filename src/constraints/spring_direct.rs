@@ -20,8 +20,10 @@
 //! least `m_b/θ_b ≥ 2⁻¹¹` (a Schur complement keeps the diagonal
 //! dominance of the mass term). The two lanes of bendy springs are two
 //! independent such systems (shared when `k_x = k_y`); a radial row couples
-//! the lanes through `g_s·d̂_s·d̂_sᵀ` (`d̂_s` the unit pole at the substep's
-//! start, the linearisation of `l' − l ≈ h·d̂·(p_b − p_a)`), and the
+//! the lanes through `g_s·n·nᵀ + γ_s·(I − n·nᵀ)` (`n` the unit direction of
+//! its impulse, `γ_s` the sideways stiffness of its tension, see
+//! [`radial_stiffness`]: the symmetric part of the row's Jacobian at the
+//! current iterate), and the
 //! system is solved per body as a 2 × 2 block.
 //!
 //! # The solve
@@ -42,7 +44,16 @@
 //! with the rows' own (nonlinear, for radial rows) impulse formulas in
 //! `R`: for bendy rows the first pass is the exact solution and the second
 //! an iterative refinement of its rounding; for radial rows the passes are
-//! a Newton iteration with the start-of-substep Jacobian. The impulses
+//! a Newton iteration in its mixed form (the sideways stiffness taken from
+//! the tension the step's linear model predicts, see
+//! [`DirectScratch::solve`]): the factor of an earlier pass of the same
+//! solve (never of an earlier step, unless the matrix is the same bit for
+//! bit: a restored world must step identically) is used while each pass
+//! on it shrinks the correction 4×, and a pass that
+//! does not is undone and redone on the matrix at the current iterate (a
+//! pole turning fast within the substep). A solve that still does not
+//! converge is made energy-safe by [`DirectScratch::solve`]'s check (the
+//! residual's work at most the body dissipation). The impulses
 //! `λ(p)` of the final `p` are then applied through the rows' own pushes
 //! (so momentum is exchanged exactly as the sweeps do), and the sweeps
 //! of `spring_solve.rs` finish from there (contacts, nonlinearity).
@@ -54,6 +65,7 @@
 //! restored world refactors and gets the same bits).
 
 use super::spring_solve::{RadialRow, SpringRow, radial_geometry};
+use super::spring_support::{SupportRow, SupportScratch};
 use crate::math::{Scalar, Vec2, WideScalar};
 
 /// A row is stiff when `g·(θ_a·w_a + θ_b·w_b) ≥ 1` in a lane, i.e. its
@@ -78,8 +90,27 @@ const MAX_ENVELOPE: usize = 1 << 22;
 /// stop once one moves no velocity by more than [`PASS_TOLERANCE`]⁻¹ of
 /// the first pass's largest move.
 const LINEAR_PASSES: usize = 8;
-const RADIAL_PASSES: usize = 8;
+/// Radial groups: Newton passes (the linearisation is refreshed where a
+/// pass contracts by less than 4×).
+const RADIAL_PASSES: usize = 16;
 const PASS_TOLERANCE: i32 = 1 << 20;
+/// Radial groups: Newton converges quadratically until the factor's
+/// rounding takes over; a pass below 2⁻¹⁰ of the first that shrinks the
+/// correction by less than 2× has reached that floor (at ω·h = 3000 about
+/// 2⁻²¹ of the first pass), and more passes would only repeat it.
+const STAGNATION_TOLERANCE: i32 = 1 << 10;
+
+/// Most support (contact) rows solved with a direct group
+/// ([`DirectScratch::couple_contacts`]: one factored solve each, and a
+/// dense Delassus matrix); a group touching more keeps the sweeps' view of
+/// its contacts.
+const MAX_COUPLED_CONTACTS: usize = 256;
+/// Projected Gauss–Seidel sweeps on the contacts' Delassus matrix, and the
+/// stop: a sweep changing no impulse by more than 2⁻¹⁶ of the largest.
+const CONTACT_SWEEPS: usize = 64;
+const CONTACT_TOLERANCE: i32 = 1 << 16;
+/// Rounds of (Newton passes, contact impulses) after the first.
+const CONTACT_ROUNDS: usize = 4;
 
 /// "No unknown" in the per-slot index.
 const NONE: u32 = u32::MAX;
@@ -219,6 +250,13 @@ pub(crate) struct DirectScratch<S: Scalar> {
     /// Per body unknown: `θ_b·w_b` and its inverse `m_b/θ_b`.
     position_push: Vec<S>,
     mass: Vec<S>,
+    /// Per body unknown: `w_b` (the energy check's dissipation term).
+    inverse_mass: Vec<S>,
+    /// Per group: the energy check's state (see [`Self::keep_energy`]).
+    blend: Vec<S>,
+    /// Per body unknown: the Newton iterate `p_N` and the safe point.
+    newton: Vec<Vec2<S>>,
+    safe: Vec<Vec2<S>>,
     /// The matrix being built, and the kept one with its factor.
     building: Envelope<S>,
     kept: Envelope<S>,
@@ -226,6 +264,31 @@ pub(crate) struct DirectScratch<S: Scalar> {
     kept_valid: bool,
     /// Two lanes in one system (radial rows or unequal lane gains).
     coupled: bool,
+    /// Per slot: the velocity gravity gave the body at the start of the
+    /// substep (`h·g⃗` times its gravity scale; filled by the caller for
+    /// scenes with radial springs, empty otherwise), for the energy check
+    /// of [`Self::keep_energy`].
+    pub(crate) kicks: Vec<Vec2<S>>,
+    /// Per radial row (in radial order): the tension estimate the Newton
+    /// matrix's sideways stiffness is built from (`None` before the first
+    /// pass: the impulse at `p = v₀`), and per radial row the pass's
+    /// linearisation `(λ(p), r̂')` at the iterate it started from.
+    tension: Vec<Option<S>>,
+    saved_tension: Vec<Option<S>>,
+    linearisation: Vec<(S, Vec2<S>)>,
+    /// The support (contact) rows that reach a direct body, each one's
+    /// response `A⁻¹·T⁻¹·P_c` per body unknown (row-major, one block of
+    /// `order.len()` per contact), their Delassus matrix (row-major) and
+    /// impulses, and the start velocities with the contacts' pushes
+    /// (see [`Self::couple_contacts`]).
+    contacts: Vec<u32>,
+    responses: Vec<Vec2<S>>,
+    delassus: Vec<S>,
+    impulses: Vec<S>,
+    changes: Vec<S>,
+    shifted: Vec<Vec2<S>>,
+    /// The position velocities before the contacts were coupled in.
+    uncoupled: Vec<Vec2<S>>,
     /// Solve buffers.
     residual: Vec<Vec2<S>>,
     right: Vec<S>,
@@ -250,11 +313,26 @@ impl<S: Scalar> Default for DirectScratch<S> {
             anchored: Vec::new(),
             position_push: Vec::new(),
             mass: Vec::new(),
+            inverse_mass: Vec::new(),
+            blend: Vec::new(),
+            newton: Vec::new(),
+            safe: Vec::new(),
             building: Envelope::default(),
             kept: Envelope::default(),
             kept_factor: Vec::new(),
             kept_valid: false,
             coupled: false,
+            kicks: Vec::new(),
+            tension: Vec::new(),
+            saved_tension: Vec::new(),
+            linearisation: Vec::new(),
+            contacts: Vec::new(),
+            responses: Vec::new(),
+            delassus: Vec::new(),
+            impulses: Vec::new(),
+            changes: Vec::new(),
+            shifted: Vec::new(),
+            uncoupled: Vec::new(),
             residual: Vec::new(),
             right: Vec::new(),
             wide: Vec::new(),
@@ -282,14 +360,15 @@ impl<S: Scalar> DirectScratch<S> {
         &mut self,
         rows: &mut [SpringRow<S>],
         radial: &mut [RadialRow<S>],
-        velocities: &[Vec2<S>],
-        position_velocities: &mut [Vec2<S>],
+        supports: &mut SupportScratch<S>,
+        (velocities, position_velocities): (&[Vec2<S>], &mut [Vec2<S>]),
         h: S,
+        every_group: bool,
     ) -> bool {
         self.direct.clear();
         self.direct.resize(rows.len(), false);
         let slots = position_velocities.len();
-        if !self.find_stiff_groups(rows, slots) {
+        if !self.find_stiff_groups(rows, slots, every_group) {
             return false;
         }
         if !self.order_unknowns(rows, slots) {
@@ -297,15 +376,28 @@ impl<S: Scalar> DirectScratch<S> {
             return false;
         }
         self.collect_masses(rows);
+        self.tension.clear();
+        self.tension.resize(radial.len(), None);
+        self.linearisation.clear();
+        self.linearisation
+            .resize(radial.len(), (S::ZERO, Vec2::ZERO));
         self.coupled = rows
             .iter()
             .zip(&self.direct)
             .any(|(row, &d)| d && (row.radial || row.rate_gain.x != row.rate_gain.y));
         let lanes = if self.coupled { 2 } else { 1 };
-        if !self.build_matrix(rows, radial, lanes) {
+        if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
             self.direct.iter_mut().for_each(|d| *d = false);
             return false;
         }
+        let any_radial = rows.iter().zip(&self.direct).any(|(r, &d)| d && r.radial);
+        // Every solve starts on the factor of its own first matrix (built
+        // at `p = v₀`): a factor kept from an earlier solve is reused only
+        // when the matrix is the same bit for bit (derived data that a
+        // restored world recomputes identically; a radial group whose
+        // poles turned between steps has another matrix and refactors).
+        // Later passes of this solve run on it as a chord (modified
+        // Newton) iteration until one does not contract 4× (below).
         if !(self.kept_valid && self.building == self.kept) {
             core::mem::swap(&mut self.building, &mut self.kept);
             self.kept_valid = factor(&self.kept, &mut self.kept_factor);
@@ -314,32 +406,471 @@ impl<S: Scalar> DirectScratch<S> {
             self.direct.iter_mut().for_each(|d| *d = false);
             return false;
         }
-        let any_radial = rows.iter().zip(&self.direct).any(|(r, &d)| d && r.radial);
+        self.iterate(
+            rows,
+            radial,
+            (velocities, position_velocities),
+            (h, lanes, any_radial),
+            false,
+        );
+        let mut shifted = core::mem::take(&mut self.shifted);
+        let mut uncoupled = core::mem::take(&mut self.uncoupled);
+        uncoupled.clear();
+        uncoupled.extend_from_slice(position_velocities);
+        let mut coupled =
+            self.couple_contacts(supports, velocities, position_velocities, &mut shifted);
+        if coupled {
+            // The contacts' impulses are now fixed loads: the exact
+            // (Newton) solve again from the linear prediction, on the
+            // same factor (a chord iteration while it contracts); the
+            // contacts then see the nonlinear answer, until their
+            // impulses settle.
+            for _ in 0..CONTACT_ROUNDS {
+                self.iterate(
+                    rows,
+                    radial,
+                    (&shifted, position_velocities),
+                    (h, lanes, any_radial),
+                    true,
+                );
+                if any_radial {
+                    // The contacts' next increments on the group's
+                    // linearisation here (an impact turns and loads the
+                    // poles: the start's matrix then misjudges the
+                    // response, and the rounds overshoot).
+                    if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
+                        break;
+                    }
+                    core::mem::swap(&mut self.building, &mut self.kept);
+                    self.kept_valid = factor(&self.kept, &mut self.kept_factor);
+                    if !self.kept_valid {
+                        break;
+                    }
+                    self.contact_responses(supports);
+                }
+                let total = self.impulses.iter().fold(S::ZERO, |m, x| m.max(x.abs()));
+                let change = self.solve_contacts(supports, position_velocities, &mut shifted);
+                if change <= total.mul(S::from_ratio(1, CONTACT_TOLERANCE)) {
+                    break;
+                }
+            }
+            self.iterate(
+                rows,
+                radial,
+                (&shifted, position_velocities),
+                (h, lanes, any_radial),
+                true,
+            );
+            self.keep_momentum(rows, &shifted, position_velocities);
+            // The contacts' impulses count in the group's energy balance
+            // like any impulse no spring row accounts for (the residual
+            // `ρ` of [`Self::keep_energy`], taken against the start `v₀`
+            // without them). Rounds that did not settle (an impact that
+            // turns and loads the poles faster than the linearisations
+            // follow) leave a residual doing work: that solution is
+            // dropped, and the group is solved without its contacts this
+            // substep, which the sweeps then leave alone (carried by the
+            // sweeps, with the contact rows' own masses against a stiff
+            // group, they diverged: 2.6e5 J in a substep).
+            if !self.passes_energy(rows, radial, velocities, position_velocities, h) {
+                position_velocities.copy_from_slice(&uncoupled);
+                for (index, row) in supports.rows.iter_mut().enumerate() {
+                    row.impulse = S::ZERO;
+                    row.held = self.contacts.contains(&(index as u32));
+                }
+                supports.pushed.iter_mut().for_each(|p| *p = Vec2::ZERO);
+                coupled = false;
+            }
+        }
+        self.uncoupled = uncoupled;
+        if !coupled {
+            self.keep_momentum(rows, velocities, position_velocities);
+        }
+        if any_radial {
+            self.keep_energy(rows, radial, velocities, position_velocities, h);
+        }
+        self.apply(rows, radial, position_velocities, h);
+        self.shifted = shifted;
+        true
+    }
+
+    /// The passes `p ← p + A⁻¹·R(p)` from `p` (see the module docs) with
+    /// `velocities` as `v₀`; `stale`: the kept factor is from an earlier
+    /// iterate (a chord iteration, redone on a fresh matrix where a pass
+    /// does not contract 4×).
+    fn iterate(
+        &mut self,
+        rows: &[SpringRow<S>],
+        radial: &[RadialRow<S>],
+        (velocities, position_velocities): (&[Vec2<S>], &mut [Vec2<S>]),
+        (h, lanes, any_radial): (S, usize, bool),
+        stale: bool,
+    ) {
+        let mut stale = stale && any_radial;
         let passes = if any_radial {
             RADIAL_PASSES
         } else {
             LINEAR_PASSES
         };
         let mut first = S::ZERO;
+        let mut previous = S::ZERO;
+        let mut relinearise = false;
         for pass in 0..passes {
+            if relinearise {
+                // Newton: the matrix at the current iterate.
+                if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
+                    break;
+                }
+                core::mem::swap(&mut self.building, &mut self.kept);
+                self.kept_valid = factor(&self.kept, &mut self.kept_factor);
+                if !self.kept_valid {
+                    break;
+                }
+                stale = false;
+            }
+            if stale {
+                self.save_iterate(position_velocities);
+            }
             let largest = self.correct(rows, radial, velocities, position_velocities, h);
             if pass == 0 {
                 first = largest;
-            } else if largest <= first.mul(S::from_ratio(1, PASS_TOLERANCE)) {
+            } else if largest <= first.mul(S::from_ratio(1, PASS_TOLERANCE))
+                || (any_radial
+                    && largest > previous.half()
+                    && (!stale || largest <= first.mul(S::from_ratio(1, STAGNATION_TOLERANCE))))
+            {
+                // Converged; or the correction stopped shrinking at the
+                // factor's rounding, or on a matrix built at this iterate
+                // (Newton itself stalls: [`Self::keep_energy`] takes over).
+                break;
+            }
+            if stale && pass > 0 && largest > previous.mul(S::from_ratio(1, 4)) {
+                // A pass on a matrix from an earlier iterate that did not
+                // contract the correction 4× (the poles turned within the
+                // substep): undone, and redone with the matrix here.
+                self.restore_iterate(position_velocities);
+                relinearise = true;
+                continue;
+            }
+            relinearise = false;
+            stale = any_radial;
+            previous = largest;
+        }
+    }
+
+    /// Solves the support (contact) rows that reach a direct body together
+    /// with the group's exact solve, so that neither the springs nor the
+    /// contacts answer with the wrong effective mass. Returns whether any
+    /// contact pushes (then `shifted` is `v₀` plus the contacts' pushes,
+    /// `p` the group's linear response to them, and the support rows carry
+    /// their impulses and pushes for the sweeps and their take-back).
+    ///
+    /// Why: a contact impulse `μ` on a body of a stiff group is carried by
+    /// the whole group (the springs answer within the substep), while the
+    /// sweeps' contact row answers with the mass of its two bodies alone and
+    /// the spring rows, one at a time, pass the push on at a rate set by the
+    /// group's stiffness and size. Capped at 8 sweeps, a group at ω·h = 30
+    /// left spring rows unsolved by most of the push, stored as spring energy
+    /// `½·(ω·h)²·r²/W`: a 20-link chain folding onto itself gained 2.6 J of
+    /// its 1.25 J in one step (the direct solve had left 3e-8 J).
+    ///
+    /// How: a contact's impulse moves its ends' position velocities by
+    /// `P_c = w·n` per unit, as in the sweeps (`spring_support.rs`), i.e.
+    /// shifts the direct system's start velocity `v₀` by `P_c`, so the
+    /// group answers with `A⁻¹·T⁻¹·P_c` (`T⁻¹·P_c = n/θ_b` on a direct body;
+    /// a body outside the direct groups moves by `P_c` itself). With the
+    /// responses, the contacts' Delassus matrix `C_cd = n_c·(δp_d(b_c) −
+    /// δp_d(a_c))` (`J·A⁻¹·Θ⁻¹·Jᵀ` on the direct bodies: symmetric positive
+    /// semi-definite where the contacted bodies share θ_b = 1, as touching
+    /// ones do; its diagonal is positive) gives the linear complementarity
+    /// problem `n_c·(p_b − p_a) + Σ_d C_cd·μ_d ≥ target_c ⊥ μ_c ≥ 0`, with
+    /// each friction impulse in `|τ_c| ≤ f_c·μ_c` against its sliding rate,
+    /// solved by projected Gauss–Seidel on the small dense matrix (64
+    /// sweeps at most). The nonlinearity of the radial rows is taken up by
+    /// the Newton passes with `v₀ + P(μ)` as the start and a few rounds of
+    /// contact increments, each on the matrix at the iterate ([`Self::solve`]),
+    /// whose result must pass the energy check of [`Self::keep_energy`] with
+    /// the contacts' impulses counted in the residual (else it is dropped).
+    /// A group reached by more than [`MAX_COUPLED_CONTACTS`] contact rows
+    /// keeps the sweeps' view of its contacts.
+    fn couple_contacts(
+        &mut self,
+        supports: &mut SupportScratch<S>,
+        velocities: &[Vec2<S>],
+        p: &mut [Vec2<S>],
+        shifted: &mut Vec<Vec2<S>>,
+    ) -> bool {
+        if supports.rows.is_empty() || !self.kept_valid {
+            return false;
+        }
+        let _n = 0;
+        self.contacts.clear();
+        for (index, row) in supports.rows.iter().enumerate() {
+            if self.local[row.a as usize] != NONE || self.local[row.b as usize] != NONE {
+                self.contacts.push(index as u32);
+            }
+        }
+        let count = self.contacts.len();
+        if count == 0 || count > MAX_COUPLED_CONTACTS {
+            return false;
+        }
+        self.contact_responses(supports);
+        let unknowns = 2 * count;
+        self.impulses.clear();
+        self.impulses.resize(unknowns, S::ZERO);
+        shifted.clear();
+        shifted.extend_from_slice(velocities);
+        self.solve_contacts(supports, p, shifted) > S::ZERO
+    }
+
+    /// The responses `δp_j` of the group to a unit of each contact
+    /// unknown on the kept factor, and their Delassus matrix (see
+    /// [`Self::couple_contacts`]).
+    fn contact_responses(&mut self, supports: &SupportScratch<S>) {
+        let n = self.order.len();
+        let count = self.contacts.len();
+        // Unknown `2·k` is contact k's normal impulse, `2·k + 1` its
+        // friction impulse (along perp(n), as the contact solve applies
+        // it); a unit of either moves the ends by `w·dir`.
+        let unknowns = 2 * count;
+        let direction = |row: &SupportRow<S>, j: usize| {
+            if j.is_multiple_of(2) {
+                (row.normal, row.push)
+            } else {
+                (row.normal.perp(), (row.push.0.perp(), row.push.1.perp()))
+            }
+        };
+        // The responses δp_j on the direct unknowns.
+        let mut rhs = core::mem::take(&mut self.residual);
+        self.responses.clear();
+        for j in 0..unknowns {
+            let row = supports.rows[self.contacts[j / 2] as usize];
+            let (_, push) = direction(&row, j);
+            rhs.clear();
+            rhs.resize(n, Vec2::ZERO);
+            for (slot, push, on_a) in [(row.a, push.0, true), (row.b, push.1, false)] {
+                let local = self.local[slot as usize];
+                if local != NONE {
+                    let force = push.scale(self.mass[local as usize]);
+                    rhs[local as usize] = if on_a {
+                        rhs[local as usize] - force
+                    } else {
+                        rhs[local as usize] + force
+                    };
+                }
+            }
+            self.solve_unknowns(&mut rhs);
+            self.responses.extend_from_slice(&rhs);
+        }
+        self.residual = rhs;
+        // δp_j at a slot: the group's response, or the push itself on a
+        // body outside the direct groups.
+        let response = |this: &Self, j: usize, slot: u32| -> Vec2<S> {
+            let local = this.local[slot as usize];
+            if local != NONE {
+                return this.responses[j * n + local as usize];
+            }
+            let row = &supports.rows[this.contacts[j / 2] as usize];
+            let (_, push) = direction(row, j);
+            let mut v = Vec2::ZERO;
+            if slot == row.a {
+                v -= push.0;
+            }
+            if slot == row.b {
+                v += push.1;
+            }
+            v
+        };
+        self.delassus.clear();
+        for i in 0..unknowns {
+            let row = &supports.rows[self.contacts[i / 2] as usize];
+            let (dir, _) = direction(row, i);
+            for j in 0..unknowns {
+                let moved = response(self, j, row.b) - response(self, j, row.a);
+                self.delassus.push(moved.dot(dir));
+            }
+        }
+    }
+
+    /// Projected Gauss–Seidel on the contacts' Delassus matrix from the
+    /// current impulses and `p` (per contact the friction impulse, clamped
+    /// to the friction cone of the current normal impulse as the contact
+    /// solve does, then the normal one), and the changes applied: the
+    /// pushes (as the sweeps make them, so the take-back is exact), the
+    /// shifted start, and the group's linear response. Returns the largest
+    /// change of an impulse.
+    fn solve_contacts(
+        &mut self,
+        supports: &mut SupportScratch<S>,
+        p: &mut [Vec2<S>],
+        shifted: &mut [Vec2<S>],
+    ) -> S {
+        let n = self.order.len();
+        let unknowns = self.impulses.len();
+        let direction = |row: &SupportRow<S>, j: usize| {
+            if j.is_multiple_of(2) {
+                row.normal
+            } else {
+                row.normal.perp()
+            }
+        };
+        self.changes.clear();
+        self.changes.resize(unknowns, S::ZERO);
+        for _ in 0..CONTACT_SWEEPS {
+            let mut largest = S::ZERO;
+            let mut total = S::ZERO;
+            for j in (0..unknowns).map(|j| j ^ 1) {
+                let row = &supports.rows[self.contacts[j / 2] as usize];
+                let diagonal = self.delassus[j * unknowns + j];
+                if !diagonal.is_positive() {
+                    continue;
+                }
+                let relative = p[row.b as usize] - p[row.a as usize];
+                let mut rate = S::Wide::from_narrow(relative.dot(direction(row, j)));
+                for k in 0..unknowns {
+                    rate = rate.add(self.delassus[j * unknowns + k].wide_mul(self.changes[k]));
+                }
+                let old = self.impulses[j].add(self.changes[j]);
+                let new = if j.is_multiple_of(2) {
+                    old.add(row.target.sub(rate.narrow()).div(diagonal))
+                        .max(S::ZERO)
+                } else {
+                    let limit = row
+                        .friction
+                        .mul(self.impulses[j - 1].add(self.changes[j - 1]));
+                    old.sub(rate.narrow().div(diagonal))
+                        .clamp(limit.neg(), limit)
+                };
+                self.changes[j] = new.sub(self.impulses[j]);
+                largest = largest.max(new.sub(old).abs());
+                total = total.max(new.abs());
+            }
+            if largest <= total.mul(S::from_ratio(1, CONTACT_TOLERANCE)) {
                 break;
             }
         }
-        self.keep_momentum(rows, velocities, position_velocities);
-        self.apply(rows, radial, position_velocities, h);
-        true
+        let mut largest = S::ZERO;
+        for (k, &index) in self.contacts.iter().enumerate() {
+            let (dn, dt) = (self.changes[2 * k], self.changes[2 * k + 1]);
+            largest = largest.max(dn.abs()).max(dt.abs());
+            self.impulses[2 * k] = self.impulses[2 * k].add(dn);
+            self.impulses[2 * k + 1] = self.impulses[2 * k + 1].add(dt);
+            let row = &mut supports.rows[index as usize];
+            row.impulse = self.impulses[2 * k];
+            row.held = true;
+            if dn == S::ZERO && dt == S::ZERO {
+                continue;
+            }
+            let along = |push: Vec2<S>| {
+                Vec2::new(
+                    S::mul_sub_mul(push.x, dn, push.y, dt),
+                    S::mul_add_mul(push.y, dn, push.x, dt),
+                )
+            };
+            let (push_a, push_b) = (along(row.push.0), along(row.push.1));
+            let (a, b) = (row.a as usize, row.b as usize);
+            supports.pushed[a] -= push_a;
+            supports.pushed[b] += push_b;
+            shifted[a] -= push_a;
+            shifted[b] += push_b;
+            if self.local[a] == NONE {
+                p[a] -= push_a;
+            }
+            if self.local[b] == NONE {
+                p[b] += push_b;
+            }
+        }
+        if largest == S::ZERO {
+            return largest;
+        }
+        for (body, &slot) in self.order.iter().enumerate() {
+            let mut sum_x = S::Wide::ZERO;
+            let mut sum_y = S::Wide::ZERO;
+            for (j, &x) in self.changes.iter().enumerate() {
+                let r = self.responses[j * n + body];
+                sum_x = sum_x.add(r.x.wide_mul(x));
+                sum_y = sum_y.add(r.y.wide_mul(x));
+            }
+            p[slot as usize] += Vec2::new(sum_x.narrow(), sum_y.narrow());
+        }
+        largest
+    }
+
+    /// Solves `A·x = b` on the kept factor, in place, per body unknown.
+    fn solve_unknowns(&mut self, b: &mut [Vec2<S>]) {
+        if self.coupled {
+            self.right.clear();
+            for r in b.iter() {
+                self.right.push(r.x);
+                self.right.push(r.y);
+            }
+            solve_factored(
+                &self.kept,
+                &self.kept_factor,
+                &mut self.right,
+                &mut self.wide,
+            );
+            for (body, v) in b.iter_mut().enumerate() {
+                *v = Vec2::new(self.right[2 * body], self.right[2 * body + 1]);
+            }
+        } else {
+            for lane in 0..2 {
+                self.right.clear();
+                self.right
+                    .extend(b.iter().map(|r| if lane == 0 { r.x } else { r.y }));
+                solve_factored(
+                    &self.kept,
+                    &self.kept_factor,
+                    &mut self.right,
+                    &mut self.wide,
+                );
+                for (v, &x) in b.iter_mut().zip(&self.right) {
+                    if lane == 0 {
+                        v.x = x;
+                    } else {
+                        v.y = x;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Keeps the current iterate (the order's position velocities and the
+    /// radial rows' tension estimates) to undo a pass.
+    fn save_iterate(&mut self, p: &[Vec2<S>]) {
+        self.newton.clear();
+        self.newton
+            .extend(self.order.iter().map(|&slot| p[slot as usize]));
+        self.saved_tension.clear();
+        self.saved_tension.extend_from_slice(&self.tension);
+    }
+
+    /// Puts back what [`Self::save_iterate`] kept.
+    fn restore_iterate(&mut self, p: &mut [Vec2<S>]) {
+        for (&slot, &saved) in self.order.iter().zip(&self.newton) {
+            p[slot as usize] = saved;
+        }
+        core::mem::swap(&mut self.tension, &mut self.saved_tension);
+    }
+
+    /// Whether solving every group of two or more rows exactly would take
+    /// more rows than [`Self::direct`] marks now (the marks are then those
+    /// of every group).
+    pub(crate) fn would_take_more(&mut self, rows: &[SpringRow<S>], slots: usize) -> bool {
+        let before = self.direct.iter().filter(|d| **d).count();
+        self.direct.clear();
+        self.direct.resize(rows.len(), false);
+        self.find_stiff_groups(rows, slots, true)
+            && self.direct.iter().filter(|d| **d).count() > before
     }
 
     /// Union–find over the rows' moving ends; marks the rows of groups
     /// with a stiff row and at least two rows. Returns whether any.
-    fn find_stiff_groups(&mut self, rows: &[SpringRow<S>], slots: usize) -> bool {
+    fn find_stiff_groups(&mut self, rows: &[SpringRow<S>], slots: usize, every: bool) -> bool {
         let stiff_limit = S::from_ratio(STIFF_INVERSE_DIAGONAL.0, STIFF_INVERSE_DIAGONAL.1);
-        let is_stiff =
-            |row: &SpringRow<S>| row.inverse_diagonal.x.min(row.inverse_diagonal.y) <= stiff_limit;
+        let is_stiff = |row: &SpringRow<S>| {
+            every || row.inverse_diagonal.x.min(row.inverse_diagonal.y) <= stiff_limit
+        };
         if !rows.iter().any(is_stiff) {
             return false;
         }
@@ -505,11 +1036,17 @@ impl<S: Scalar> DirectScratch<S> {
         let n = self.order.len();
         self.position_push.clear();
         self.position_push.resize(n, S::ZERO);
+        self.inverse_mass.clear();
+        self.inverse_mass.resize(n, S::ZERO);
         for (row, _) in rows.iter().zip(&self.direct).filter(|(_, d)| **d) {
-            for (slot, push) in [(row.a, row.position_push.0), (row.b, row.position_push.1)] {
+            for (slot, push, w) in [
+                (row.a, row.position_push.0, row.inverse_masses.0),
+                (row.b, row.position_push.1, row.inverse_masses.1),
+            ] {
                 let local = self.local[slot as usize];
                 if local != NONE {
                     self.position_push[local as usize] = push;
+                    self.inverse_mass[local as usize] = w;
                 }
             }
         }
@@ -531,6 +1068,7 @@ impl<S: Scalar> DirectScratch<S> {
         rows: &[SpringRow<S>],
         radial: &[RadialRow<S>],
         lanes: usize,
+        (p, h): (&[Vec2<S>], S),
     ) -> bool {
         let n = self.order.len();
         let env = &mut self.building;
@@ -562,7 +1100,7 @@ impl<S: Scalar> DirectScratch<S> {
                 env.add(u, u, self.mass[body]);
             }
         }
-        let mut radial_rows = radial.iter();
+        let mut radial_rows = radial.iter().zip(&self.tension);
         for (row, &direct) in rows.iter().zip(&self.direct) {
             let geometry = if row.radial { radial_rows.next() } else { None };
             if !direct {
@@ -572,13 +1110,13 @@ impl<S: Scalar> DirectScratch<S> {
             // The row's lane coupling: diag(g_x, g_y) for a bendy row,
             // g·d̂·d̂ᵀ for a radial one (d̂ the unit pole at the start).
             let block = match geometry {
-                Some(geometry) => {
-                    let g = row.rate_gain.x;
-                    let d = geometry.offset.try_normalize().unwrap_or(Vec2::Y);
-                    let gx = d.scale(g);
+                Some((geometry, &tension)) => {
+                    let (g, d, across) = radial_stiffness(row, geometry, tension, p, h);
+                    // g·n·nᵀ + γ·(I − n·nᵀ) = (g − γ)·n·nᵀ + γ·I.
+                    let gd = d.scale(g.sub(across));
                     [
-                        [gx.x.mul(d.x), gx.x.mul(d.y)],
-                        [gx.x.mul(d.y), gx.y.mul(d.y)],
+                        [gd.x.mul(d.x).add(across), gd.x.mul(d.y)],
+                        [gd.x.mul(d.y), gd.y.mul(d.y).add(across)],
                     ]
                 }
                 None => [[row.rate_gain.x, S::ZERO], [S::ZERO, row.rate_gain.y]],
@@ -635,25 +1173,30 @@ impl<S: Scalar> DirectScratch<S> {
         }
     }
 
-    /// One pass `p ← p + A⁻¹·R(p)`; returns its largest velocity change.
-    fn correct(
+    /// `R(p) = Gᵀ·λ(p) − T⁻¹·(p − v₀)` per body unknown into `residual`
+    /// (and each direct radial row's linearisation at `p`).
+    fn compute_residual(
         &mut self,
         rows: &[SpringRow<S>],
         radial: &[RadialRow<S>],
         velocities: &[Vec2<S>],
-        p: &mut [Vec2<S>],
+        p: &[Vec2<S>],
         h: S,
-    ) -> S {
+    ) {
         let n = self.order.len();
         self.residual.clear();
         self.residual.resize(n, Vec2::ZERO);
-        let mut radial_rows = radial.iter();
+        let mut radial_rows = radial.iter().zip(self.linearisation.iter_mut());
         for (row, &direct) in rows.iter().zip(&self.direct) {
             let geometry = if row.radial { radial_rows.next() } else { None };
             if !direct {
                 continue;
             }
-            let (impulse, _) = Self::row_impulse(row, geometry, p, h);
+            let (impulse, lambda) = Self::row_impulse(row, geometry.as_ref().map(|g| g.0), p, h);
+            if let Some((geometry, linearisation)) = geometry {
+                let end = geometry.offset + (p[row.b as usize] - p[row.a as usize]).scale(h);
+                *linearisation = (lambda, end.try_normalize().unwrap_or(Vec2::ZERO));
+            }
             let (a, b) = (self.local[row.a as usize], self.local[row.b as usize]);
             if a != NONE {
                 self.residual[a as usize] -= impulse;
@@ -666,6 +1209,18 @@ impl<S: Scalar> DirectScratch<S> {
             let moved = p[slot as usize] - velocities[slot as usize];
             self.residual[body] -= moved.scale(self.mass[body]);
         }
+    }
+
+    /// One pass `p ← p + A⁻¹·R(p)`; returns its largest velocity change.
+    fn correct(
+        &mut self,
+        rows: &[SpringRow<S>],
+        radial: &[RadialRow<S>],
+        velocities: &[Vec2<S>],
+        p: &mut [Vec2<S>],
+        h: S,
+    ) -> S {
+        self.compute_residual(rows, radial, velocities, p, h);
         let mut largest = S::ZERO;
         if self.coupled {
             self.right.clear();
@@ -709,7 +1264,233 @@ impl<S: Scalar> DirectScratch<S> {
                 largest = self.right.iter().fold(largest, |m, d| m.max(d.abs()));
             }
         }
+        self.linearised_tension(rows, radial, h);
         largest
+    }
+
+    /// The tension each direct radial row's linearisation predicts at the
+    /// new iterate, `λ(p) − (g/h)·h·r̂'·(δp_b − δp_a)` (the pass's steps
+    /// `δp` are in `right`, per unknown): the impulse of the Newton step's
+    /// own linear model, which the next matrix's sideways stiffness is
+    /// built from. Evaluating the tension at the new iterate instead
+    /// (`λ(p + δp)`) takes in `(g/h)` times the length's curvature over
+    /// the step, `|h·δp⊥|²/(2·l)`: at ω·h = 3000 an impulse 10⁴ times the
+    /// true one after the first pass on a kicked 200-body chain, whose
+    /// sideways stiffness then froze or released the chain's turn and the
+    /// passes diverged (10⁹ × the energy in one tick). This is the
+    /// mixed (impulse and velocity) form of Newton's method, whose
+    /// convergence does not degrade with the stiffness.
+    fn linearised_tension(&mut self, rows: &[SpringRow<S>], radial: &[RadialRow<S>], h: S) {
+        let lanes = if self.coupled { 2 } else { 1 };
+        let step = |local: u32| -> Vec2<S> {
+            if local == NONE || lanes != 2 {
+                return Vec2::ZERO;
+            }
+            let i = 2 * local as usize;
+            Vec2::new(self.right[i], self.right[i + 1])
+        };
+        let mut radial_rows = radial.iter().zip(&self.linearisation);
+        let mut updates = core::mem::take(&mut self.tension);
+        let mut index = 0usize;
+        for (row, &direct) in rows.iter().zip(&self.direct) {
+            if !row.radial {
+                continue;
+            }
+            let Some((geometry, &(lambda, unit))) = radial_rows.next() else {
+                break;
+            };
+            if direct {
+                let moved = step(self.local[row.b as usize]) - step(self.local[row.a as usize]);
+                updates[index] =
+                    Some(lambda.sub(geometry.gain_per_length.mul(h.mul(unit.dot(moved)))));
+            }
+            index += 1;
+        }
+        self.tension = updates;
+    }
+
+    /// The energy safeguard of the radial Newton solve, which may stop short
+    /// of convergence (a whip or a fast turn of a very stiff group within
+    /// [`RADIAL_PASSES`], or the factor's rounding): the step is kept where
+    /// it cannot gain energy, and is otherwise pulled back towards a point
+    /// that provably does not. Run after every radial solve (one residual
+    /// evaluation; a converged solve passes at once).
+    ///
+    /// Every row's equation holds exactly at any `p` ([`Self::apply`] sets
+    /// `λ = λ(p)`); what an unconverged `p` leaves is the body residual
+    /// `ρ_b = (m_b/θ_b)·(p_b − v₀_b) − (Gᵀ·λ(p))_b`, an impulse no row
+    /// accounts for. Repeating the balance of [`crate::constraints`]
+    /// ("Energy: never gained"; `M·Δv = Gᵀ·λ + ρ`, `v₀ + ½·Δv + (θ_b −
+    /// ½)·Δv = p`) gives
+    ///
+    /// ```text
+    /// ΔE = −Σ_b (θ_b − ½)·m_b·|Δv_b|² − Σ_s ((θ_s − ½)·k_s + c_s/h)·Δx_s² + Σ_b ρ_b·p_b
+    /// ```
+    ///
+    /// so the step gains nothing while the residual's work
+    /// `W = Σ_b ρ_b·p_b` is at most the body dissipation
+    /// `D = Σ_b (θ_b − ½)·m_b·|Δv_b|²`. Under gravity (a kick `h·g⃗_b`
+    /// inside `v₀`) the invariant is `E_θ = E + Σ_b (1 − θ_b)·h·m_b·g⃗_b·v_b`
+    /// (`crate::constraints`, "Radial springs") and the body term becomes
+    /// `(θ_b − ½)·m_b·|Δv_b + h·g⃗_b|²` (the balance with the kick's terms
+    /// collected, `ρ` entering as above), so `D` is taken as that:
+    /// `(m_b/θ_b)·(1 − 1/(2·θ_b))·|p_b − v₀_b + θ_b·h·g⃗_b|²`. A group that fails
+    /// this is moved along `p(α) = p_s + α·(p_N − p_s)`, α = ½, ¼, … 2⁻¹⁰,
+    /// then 0, to the first α that passes. The safe point `p_s` has no
+    /// internal motion: every body at the group's mean `c` (weights
+    /// `m_b/θ_b`, so `Σ_b (m_b/θ_b)·(c − v₀_b) = 0`) for a free group, at
+    /// rest for one hung on immovable anchors. There `Σ_b ρ_b = 0` (internal
+    /// impulses cancel in pairs) gives `W = c·Σ_b ρ_b = 0` for a free
+    /// group, and `p = 0` gives `W = 0` for an anchored one: `ΔE ≤ 0` at
+    /// α = 0 whatever the rows do. The price where it acts is damping: at
+    /// α = 0 the group's internal motion of the substep is taken out.
+    fn keep_energy(
+        &mut self,
+        rows: &[SpringRow<S>],
+        radial: &[RadialRow<S>],
+        velocities: &[Vec2<S>],
+        p: &mut [Vec2<S>],
+        h: S,
+    ) {
+        let groups = self.group_start.len().saturating_sub(1);
+        // Which groups are anchored (as in `keep_momentum`).
+        self.anchored.clear();
+        self.anchored.resize(groups, false);
+        for (row, _) in rows.iter().zip(&self.direct).filter(|(_, d)| **d) {
+            if row.inverse_masses.0.is_positive() && row.inverse_masses.1.is_positive() {
+                continue;
+            }
+            let local = self.local[moving_end(row) as usize];
+            if local == NONE {
+                continue;
+            }
+            let group = self.group_start.partition_point(|&start| start <= local) - 1;
+            self.anchored[group] = true;
+        }
+        // The Newton iterate and each group's safe point.
+        self.newton.clear();
+        self.safe.clear();
+        for group in 0..groups {
+            let range = self.group_start[group] as usize..self.group_start[group + 1] as usize;
+            let mean = if self.anchored[group] {
+                Vec2::ZERO
+            } else {
+                let (mut sum_x, mut sum_y, mut total) =
+                    (S::Wide::ZERO, S::Wide::ZERO, S::Wide::ZERO);
+                for body in range.clone() {
+                    let v = velocities[self.order[body] as usize];
+                    sum_x = sum_x.add(self.mass[body].wide_mul(v.x));
+                    sum_y = sum_y.add(self.mass[body].wide_mul(v.y));
+                    total = total.add(S::Wide::from_narrow(self.mass[body]));
+                }
+                let total = total.narrow();
+                if total.is_positive() {
+                    Vec2::new(sum_x.narrow().div(total), sum_y.narrow().div(total))
+                } else {
+                    Vec2::ZERO
+                }
+            };
+            for body in range {
+                self.newton.push(p[self.order[body] as usize]);
+                self.safe.push(mean);
+            }
+        }
+        // Per group: the blend α as a power of two (0 = accepted; the
+        // exponent of the next try otherwise).
+        self.blend.clear();
+        self.blend.resize(groups, S::ONE);
+        let mut exponent = 0;
+        loop {
+            let failing = self.failing_groups(rows, radial, velocities, p, h);
+            if failing == 0 {
+                return;
+            }
+            exponent += 1;
+            // 2⁻¹⁰ and then the safe point itself.
+            let alpha = if exponent > 10 {
+                S::ZERO
+            } else {
+                S::from_ratio(1, 1 << exponent)
+            };
+            for group in 0..groups {
+                if self.blend[group] == S::ZERO {
+                    continue;
+                }
+                self.blend[group] = alpha;
+                let range = self.group_start[group] as usize..self.group_start[group + 1] as usize;
+                for body in range {
+                    let (newton, safe) = (self.newton[body], self.safe[body]);
+                    p[self.order[body] as usize] = safe + (newton - safe).scale(alpha);
+                }
+            }
+            if alpha == S::ZERO {
+                return;
+            }
+        }
+    }
+
+    /// Whether every group's residual does at most its body dissipation of
+    /// work at `p` (the check of [`Self::keep_energy`] at α = 1).
+    fn passes_energy(
+        &mut self,
+        rows: &[SpringRow<S>],
+        radial: &[RadialRow<S>],
+        velocities: &[Vec2<S>],
+        p: &[Vec2<S>],
+        h: S,
+    ) -> bool {
+        let groups = self.group_start.len().saturating_sub(1);
+        self.blend.clear();
+        self.blend.resize(groups, S::ONE);
+        self.failing_groups(rows, radial, velocities, p, h) == 0
+    }
+
+    /// Marks (with a zero blend) every group whose residual's work is at
+    /// most its body dissipation at the current `p` (see
+    /// [`Self::keep_energy`]); returns how many groups still fail.
+    fn failing_groups(
+        &mut self,
+        rows: &[SpringRow<S>],
+        radial: &[RadialRow<S>],
+        velocities: &[Vec2<S>],
+        p: &[Vec2<S>],
+        h: S,
+    ) -> usize {
+        self.compute_residual(rows, radial, velocities, p, h);
+        let groups = self.group_start.len().saturating_sub(1);
+        let mut failing = 0;
+        for group in 0..groups {
+            if self.blend[group] == S::ZERO {
+                continue;
+            }
+            let range = self.group_start[group] as usize..self.group_start[group + 1] as usize;
+            // W = Σ ρ·p with ρ = −R; D as in `keep_energy`.
+            let (mut work, mut dissipation) = (S::Wide::ZERO, S::Wide::ZERO);
+            for body in range {
+                let slot = self.order[body] as usize;
+                let (pb, r) = (p[slot], self.residual[body]);
+                work = work.sub(r.x.wide_mul(pb.x)).sub(r.y.wide_mul(pb.y));
+                // θ_b·(Δv_b + h·g⃗_b) = p_b − v₀_b + θ_b·h·g⃗_b.
+                let theta = self.position_push[body].div(self.inverse_mass[body]);
+                let kick = self.kicks.get(slot).copied().unwrap_or(Vec2::ZERO);
+                let moved = pb - velocities[slot] + kick.scale(theta);
+                // (θ_b − ½)·m_b/θ_b² = (m_b/θ_b)·(1 − w_b·(m_b/θ_b)/2) ≥ 0
+                // (w_b·m_b/θ_b = 1/θ_b ≤ 2).
+                let weight = self.mass[body]
+                    .mul(S::ONE.sub(self.inverse_mass[body].mul(self.mass[body]).half()));
+                // (saturating: a saturated product only makes D smaller,
+                // the check stricter)
+                dissipation = dissipation
+                    .add(weight.mul(moved.x).wide_mul(moved.x))
+                    .add(weight.mul(moved.y).wide_mul(moved.y));
+            }
+            if work <= dissipation {
+                self.blend[group] = S::ZERO;
+            } else {
+                failing += 1;
+            }
+        }
+        failing
     }
 
     /// Gives every free group (no row on an immovable anchor) back its
@@ -808,6 +1589,51 @@ impl<S: Scalar> DirectScratch<S> {
             }
         }
     }
+}
+
+/// A radial row's linearisation at the position velocities `p`: its gain
+/// `g` along the unit pole `n` (the direction of `d`), and the transverse
+/// stiffness of its tension, `γ = max(0, −λ)·h/(l + l')`.
+///
+/// The row's impulse is `J = λ·d` with `d = (r + r')/(l + l')`, so
+/// `∂J/∂p_b = −g·d·r̂'ᵀ + λ·h·(I − d·r̂'ᵀ)/(l + l')`: the first term is the
+/// spring's own stiffness along the pole, the second the turn of `d` with
+/// the end (a taut string's sideways stiffness, `T/l` per unit length).
+/// The Newton matrix takes the symmetric part `g·n·nᵀ + γ·(I − n·nᵀ)`
+/// (`d ≈ r̂' ≈ n` to the pole's turn in the substep); under compression
+/// `γ` would be negative and is left out, so the matrix stays positive
+/// definite. Without `γ` the sideways motion of a light body between two
+/// taut springs is solved by a fixed-point iteration whose rate is about
+/// `θ·w·γ` relative to the mass term: at `(ω·h)² ·strain ≳ 1` that
+/// diverges (two springs from a fixed point with a 100× end at ω·h = 3
+/// reached the world's bound in 28 ticks).
+fn radial_stiffness<S: Scalar>(
+    row: &SpringRow<S>,
+    geometry: &RadialRow<S>,
+    tension: Option<S>,
+    p: &[Vec2<S>],
+    h: S,
+) -> (S, Vec2<S>, S) {
+    let (p_a, p_b) = (p[row.a as usize], p[row.b as usize]);
+    let (end_length, direction) = radial_geometry(geometry, (p_a, p_b), h);
+    let lambda = tension.unwrap_or_else(|| {
+        row.target.x.sub(
+            geometry
+                .gain_per_length
+                .mul(end_length.sub(geometry.length)),
+        )
+    });
+    let unit = direction
+        .try_normalize()
+        .or_else(|| geometry.offset.try_normalize())
+        .unwrap_or(Vec2::Y);
+    let scale = geometry.length.add(end_length);
+    let across = if lambda.is_negative() && scale.is_positive() {
+        lambda.neg().mul(h).div(scale)
+    } else {
+        S::ZERO
+    };
+    (row.rate_gain.x, unit, across)
 }
 
 /// A moving end of a row (`w_a + w_b > 0`, so one is).

@@ -42,6 +42,12 @@ pub(crate) struct SupportRow<S: Scalar> {
     pub(crate) push: (Vec2<S>, Vec2<S>),
     /// The accumulated impulse `μ ≥ 0`.
     pub(crate) impulse: S,
+    /// Solved with a stiff group's exact solve (`spring_direct.rs`): the
+    /// sweeps leave it as it is.
+    pub(crate) held: bool,
+    /// The pair's Coulomb friction coefficient (the direct solve of stiff
+    /// groups carries the friction impulse too, `spring_direct.rs`).
+    pub(crate) friction: S,
     /// The pair touches (separation within the slop) at the substep's
     /// start: its ends take the contact solver's blend θ = 1.
     pub(crate) touching: bool,
@@ -73,7 +79,7 @@ impl<S: Scalar> SupportScratch<S> {
     /// impulse change.
     pub(crate) fn sweep(&mut self, position_velocities: &mut [Vec2<S>]) -> S {
         let mut largest = S::ZERO;
-        for row in &mut self.rows {
+        for row in self.rows.iter_mut().filter(|row| !row.held) {
             let (a, b) = (row.a as usize, row.b as usize);
             let relative = position_velocities[b] - position_velocities[a];
             let wanted = row
