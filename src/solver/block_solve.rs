@@ -222,22 +222,22 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
     mut side: Option<(&[S], &mut [S])>,
     work: &mut BlockScratch<S>,
 ) {
+    // The rows below `ropes` are ropes (the rope rows come first, and a
+    // rope group may hold contacts too); without `side`, every row is a
+    // contact.
+    let ropes = side.as_ref().map_or(0, |(stiffness, _)| stiffness.len());
     work.active.clear();
-    if side.is_some() {
-        work.active.extend_from_slice(group);
-    } else {
-        // Contacts: a row carrying no impulse whose target the bodies
-        // already meet (`J v ≥ target`: a speculative row of bodies
-        // still apart, a touching row not pressed) needs no impulse;
-        // starting with it active makes the equality solve pull on it
-        // and a round release it again, and a group with more such rows
-        // than rounds never got a solution applied (below).
-        work.active.extend(group.iter().copied().filter(|&ri| {
-            let row = &rows[ri];
-            let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
-            row.normal_impulse.is_positive() || vn < row.target_velocity
-        }));
-    }
+    // Ropes start active. Contacts: a row carrying no impulse whose
+    // target the bodies already meet (`J v ≥ target`: a speculative row of
+    // bodies still apart, a touching row not pressed) needs no impulse;
+    // starting with it active makes the equality solve pull on it and a
+    // round release it again, and a group with more such rows than rounds
+    // never got a solution applied (below).
+    work.active.extend(group.iter().copied().filter(|&ri| {
+        let row = &rows[ri];
+        let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
+        ri < ropes || row.normal_impulse.is_positive() || vn < row.target_velocity
+    }));
     let mut applied = false;
     for _ in 0..ROUNDS {
         match side.as_ref() {
@@ -298,16 +298,16 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
         }
         work.active.retain(|ri| !released.contains(ri));
     }
-    if side.is_none() {
-        sequential_remainder(rows, group, velocities, applied, &work.active);
+    if group.last().is_some_and(|&ri| ri >= ropes) {
+        sequential_remainder(rows, group, velocities, applied, &work.active, ropes);
     }
 }
 
-/// The contact rows of `group` the rounds of [`solve_group_velocities`]
-/// did not solve take one sequential impulse each (accumulated impulse
-/// kept ≥ 0): rows left out or released, and every row when no round's
-/// solution was applied (`applied` false; `active` the rows still in the
-/// set, ascending as `group`). Why: every round may release rows (each
+/// The contact rows of `group` (those from `ropes` on) the rounds of
+/// [`solve_group_velocities`] did not solve take one sequential impulse
+/// each (accumulated impulse kept ≥ 0): rows left out or released, and
+/// every row when no round's solution was applied (`applied` false;
+/// `active` the rows still in the set, ascending as `group`). Why: every round may release rows (each
 /// release changes which others must pull), and when the rounds ran out
 /// the group got only the releases: a column of 19 bodies in a crowd of
 /// 300 kept its rows unsolved in every sweep, gravity piled up in its
@@ -319,6 +319,7 @@ fn sequential_remainder<S: Scalar>(
     velocities: &mut [Vec2<S>],
     applied: bool,
     active: &[usize],
+    ropes: usize,
 ) {
     let mut next_active = active.iter().copied().peekable();
     for &ri in group {
@@ -326,7 +327,7 @@ fn sequential_remainder<S: Scalar>(
         if next_active.peek() == Some(&ri) {
             next_active.next();
         }
-        if solved {
+        if solved || ri < ropes {
             continue;
         }
         let row = &mut rows[ri];

@@ -103,11 +103,13 @@ impl RowGroups {
     pub(crate) fn regroup<S: Scalar>(
         &mut self,
         rows: &[ContactConstraint<S>],
+        ropes: usize,
         slot_count: usize,
         slop: S,
         gravity: Vec2<S>,
         parents: &mut Vec<u32>,
     ) {
+        let ropes = ropes.min(rows.len());
         islands::reset(parents, slot_count);
         self.root_flags.clear();
         self.root_flags.resize(slot_count, 0);
@@ -137,9 +139,20 @@ impl RowGroups {
         // whose ends are already joined closes a cycle: it is off the
         // tree, and its group is cyclic (which spares `plan_tree` the
         // check; rows to fixed bodies never close one).
-        for pass in 0..TIERS {
+        for (pass, kind) in (0..2 * TIERS).map(|k| (k % TIERS, k / TIERS)) {
             let apart = pass == APART_TIER;
-            for (ri, (row, &t)) in rows.iter().zip(&self.row_tier).enumerate() {
+            let kind_rows = if kind == 0 {
+                0..ropes
+            } else {
+                ropes..rows.len()
+            };
+            for (ri, (row, &t)) in rows
+                .iter()
+                .zip(&self.row_tier)
+                .enumerate()
+                .take(kind_rows.end)
+                .skip(kind_rows.start)
+            {
                 if t != pass {
                     continue;
                 }
@@ -248,7 +261,8 @@ impl RowGroups {
     ///   boxes, where each box sees the one two below within the
     ///   speculative margin: that row is apart and off the tree) is solved
     ///   exactly in linear time by [`crate::solver::tree_solve`] when
-    ///   `always_direct` (ropes), when it has 3 rows or more, or when its
+    ///   it holds a rope (the rows below `rope_rows`: a rope group, with
+    ///   any contacts its bodies have), when it has 3 rows or more, or when its
     ///   masses are uneven; its rows off the tree take sequential impulses
     ///   after the exact solve in every sweep. Sequential impulses need
     ///   `O(n²)` sweeps to carry a correction along a chain of `n` rows,
@@ -295,7 +309,7 @@ impl RowGroups {
         &mut self,
         rows: &[ContactConstraint<S>],
         slot_count: usize,
-        always_direct: bool,
+        rope_rows: usize,
         velocities: &[Vec2<S>],
         rest_speed: S,
     ) {
@@ -309,6 +323,9 @@ impl RowGroups {
             let cyclic = self.cyclic[g];
             let supported = self.support[g] == TOUCHING_EDGE | GROUNDED;
             let group = &grouped[self.starts[g]..self.starts[g + 1]];
+            // A group holding a rope (its rows ascend, ropes first) is
+            // solved as a rope group, contacts and all.
+            let always_direct = group.first().is_some_and(|&ri| ri < rope_rows);
             let position = if group.len() < 2 {
                 GroupSolve::Sequential
             } else {
@@ -318,9 +335,14 @@ impl RowGroups {
                 // any size (the block solver leaves rings of light links
                 // 0.16 % long for a second where the closed tree holds the
                 // slop, at a fraction of its O(n³) cost).
+                // Its contacts off the tree take sequential impulses.
                 let closable = || {
                     always_direct
-                        && group.iter().filter(|&&ri| self.off_tree[ri]).count() <= MAX_LOOP_ROWS
+                        && group
+                            .iter()
+                            .filter(|&&ri| ri < rope_rows && self.off_tree[ri])
+                            .count()
+                            <= MAX_LOOP_ROWS
                 };
                 let block = cyclic && direct && group.len() <= MAX_BLOCK && !closable();
                 let start = self.plans.len();
@@ -596,7 +618,7 @@ mod tests {
     fn grouped(rows: &[ContactConstraint<Fx>], slots: usize) -> Vec<Vec<usize>> {
         let mut groups = RowGroups::default();
         let mut parents = Vec::new();
-        groups.regroup(rows, slots, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(rows, 0, slots, Fx::ZERO, Vec2::ZERO, &mut parents);
         groups.iter().map(<[usize]>::to_vec).collect()
     }
 
@@ -631,7 +653,7 @@ mod tests {
             row(4, 5, 1, 1),
             row(6, 7, 1, 1),
         ];
-        groups.regroup(&rows, 8, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(&rows, 0, 8, Fx::ZERO, Vec2::ZERO, &mut parents);
         assert_eq!(groups.iter().count(), 3);
         assert_eq!(groups.cyclic, vec![true, false, true]);
         let trees = |groups: &RowGroups| -> Vec<bool> {
@@ -642,11 +664,11 @@ mod tests {
         };
         // Contacts: the cycles (even masses, not resting on anything) are
         // not solved on a tree.
-        groups.classify(&rows, 8, false, &[Vec2::ZERO; 8], Fx::ZERO);
+        groups.classify(&rows, 8, 0, &[Vec2::ZERO; 8], Fx::ZERO);
         assert_eq!(trees(&groups), vec![false, true, false]);
         // Ropes: a group with few rows off its spanning tree takes the
         // tree solve, which closes its loops exactly.
-        groups.classify(&rows, 8, true, &[Vec2::ZERO; 8], Fx::ZERO);
+        groups.classify(&rows, 8, rows.len(), &[Vec2::ZERO; 8], Fx::ZERO);
         assert_eq!(trees(&groups), vec![true, true, true]);
     }
 
@@ -655,13 +677,13 @@ mod tests {
         let mut groups = RowGroups::default();
         let mut parents = Vec::new();
         let first = [row(0, 1, 1, 1), row(2, 3, 1, 1), row(1, 2, 1, 1)];
-        groups.regroup(&first, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(&first, 0, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
         assert_eq!(groups.iter().count(), 1);
         let second = [row(0, 1, 1, 1), row(2, 3, 1, 1)];
-        groups.regroup(&second, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(&second, 0, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
         let got: Vec<Vec<usize>> = groups.iter().map(<[usize]>::to_vec).collect();
         assert_eq!(got, vec![vec![0], vec![1]]);
-        groups.regroup::<Fx>(&[], 4, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup::<Fx>(&[], 0, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
         assert_eq!(groups.iter().count(), 0);
     }
 }

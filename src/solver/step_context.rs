@@ -72,9 +72,15 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) rope_velocity_side: Vec<S>,
     /// The sideways impulse each rope row received this substep.
     pub(crate) rope_side_impulse: Vec<S>,
-    /// Rope rows grouped by shared bodies (chains), for the block solver.
-    pub(crate) rope_groups: RowGroups,
-    /// Contact rows grouped by shared bodies, for the block solver.
+    /// The rows the rope solves work on, when any rope is active: the
+    /// rope rows, then the contact rows (`rope_rows.len()` is where the
+    /// contacts start), so that ropes and contacts sharing a body are one
+    /// group (`world::step::solve`, "Ropes and contacts in one group").
+    pub(crate) joint_rows: Vec<ContactConstraint<S>>,
+    /// `joint_rows` grouped by shared bodies.
+    pub(crate) joint_groups: RowGroups,
+    /// Contact rows grouped by shared bodies: the solves when no rope is
+    /// active, and the bounce solve (`solver::restitution`) always.
     pub(crate) contact_groups: RowGroups,
     /// Working memory of the block solver.
     pub(crate) rope_block: BlockScratch<S>,

@@ -119,6 +119,9 @@ pub(crate) struct TreeScratch<S: Scalar> {
     drift: Vec<Vec2<S>>,
     /// `f_k` per slot (back pass).
     load: Vec<Vec2<S>>,
+    /// Per slot: how far one rope group's position pass may move the body
+    /// ([`trust_scale`]).
+    reach: Vec<S>,
     /// `λ⁰` per row.
     free: Vec<S>,
     /// `a` per row.
@@ -175,6 +178,7 @@ impl<S: Scalar> TreeScratch<S> {
             self.mobility.resize(slots, Sym2::default());
             self.drift.resize(slots, Vec2::ZERO);
             self.load.resize(slots, Vec2::ZERO);
+            self.reach.resize(slots, S::ZERO);
         }
         if self.free.len() < rows {
             self.free.resize(rows, S::ZERO);
@@ -380,17 +384,35 @@ fn mark_plan<S: Scalar>(group: &[usize], plan: &[TreeRow], work: &mut TreeScratc
     }
 }
 
-/// Whether a tree group's rows off its spanning tree are solved exactly
-/// with the tree ([`loop_closure`]): it has some (the plan holds every
-/// other row of the group), and at most [`MAX_LOOP_ROWS`].
+/// Which of a rope group's rows off its spanning tree (the plan marked in
+/// `work.in_plan`) are solved exactly with the tree ([`loop_closure`]):
+/// the rows below the index returned. All of them (`usize::MAX`) when
+/// there are 1..=[`MAX_LOOP_ROWS`]; else its rope rows (those below
+/// `ropes`, the rope rows coming first) when they are that many; else
+/// none (0, also for a group without ropes, `ropes` 0).
 ///
 /// The callers close the loops of rope groups only (those are the groups
 /// passed a sideways stiffness): a cyclic contact group above the block
 /// solver's size is a pile with a row off the tree for nearly every body,
-/// far beyond what `k + 2` tree solves per sweep can afford.
-fn closes_loops(group: &[usize], plan: &[TreeRow]) -> bool {
-    let off = group.len().saturating_sub(plan.len());
-    (1..=MAX_LOOP_ROWS).contains(&off)
+/// far beyond what `k + 2` tree solves per sweep can afford. For the same
+/// reason a rope group's contacts off the tree (links of a folded ring
+/// touching each other) are not closed: they take sequential impulses.
+fn closes_loops<S: Scalar>(group: &[usize], ropes: usize, work: &TreeScratch<S>) -> usize {
+    let off = |below: usize| {
+        group
+            .iter()
+            .filter(|&&ri| ri < below && !work.in_plan[ri])
+            .count()
+    };
+    if ropes == 0 {
+        0
+    } else if (1..=MAX_LOOP_ROWS).contains(&off(usize::MAX)) {
+        usize::MAX
+    } else if (1..=MAX_LOOP_ROWS).contains(&off(ropes)) {
+        ropes
+    } else {
+        0
+    }
 }
 
 /// One exact solve of the active rows: the tree alone, or with its active
@@ -460,6 +482,22 @@ fn apply_side<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Ve
 /// the last round is left to the sequential pass and the next iteration.
 const ROUNDS: usize = 4;
 
+/// Whether a rope group (`ropes`: one entry per rope row, the rope rows
+/// first) holds contacts too: its last row is not a rope.
+fn holds_contacts<S>(group: &[usize], ropes: &[S]) -> bool {
+    !ropes.is_empty() && group.last().is_some_and(|&ri| ri >= ropes.len())
+}
+
+/// Active-set rounds per solve of a group holding ropes and contacts. A chain lying on
+/// a peg or a face and pulled off it lets go of its contacts one after
+/// another: each round's solve makes the next link's contact pull once the
+/// one before is released (a 50-link chain sliding off a box peg released
+/// one row per round for 4 rounds in every sweep, so no solution was ever
+/// applied, and the chain stretched 26 %). The rounds stop as soon as no
+/// row is released, so a group that settles in one or two rounds costs
+/// no more.
+const ROPE_ROUNDS: usize = 16;
+
 /// One exact velocity solve of a tree group's normal impulses, with the
 /// accumulated impulses kept non-negative (active set), followed by a
 /// sequential-impulse update of the rows the exact solve left out (idle
@@ -502,7 +540,12 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     mark_plan(group, plan, work);
     // The count of rows off the tree in `closes_loops` holds for a group
     // solved on one tree only (`off_plan` not given).
-    let closing = side.is_some() && off_plan.is_none() && closes_loops(group, plan);
+    // Off-tree rows closed exactly with the tree: those below `closing`
+    // ([`closes_loops`]); the others take sequential impulses.
+    let closing = match side.as_ref() {
+        Some(sr) if off_plan.is_none() => closes_loops(group, sr.stiffness.len(), work),
+        _ => 0,
+    };
     for &ri in group {
         let row = &rows[ri];
         work.side_stiffness[ri] = side
@@ -511,13 +554,17 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
             .and_then(|sr| sr.stiffness.get(ri).copied())
             .unwrap_or(S::ZERO);
         work.side_value[ri] = S::ZERO;
-        work.active[ri] = (work.in_plan[ri] || closing)
+        work.active[ri] = (work.in_plan[ri] || ri < closing)
             && (row.normal_impulse.is_positive()
                 || row.separation <= slop
                 || !shortfall(row, velocities).is_negative());
     }
+    let rounds = match side.as_ref() {
+        Some(sr) if holds_contacts(group, sr.stiffness) => ROPE_ROUNDS,
+        _ => ROUNDS,
+    };
     let mut side = side;
-    for _ in 0..ROUNDS {
+    for _ in 0..rounds {
         for &ri in group {
             if work.active[ri] {
                 work.value[ri] = shortfall(&rows[ri], velocities);
@@ -536,7 +583,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
                 }
             }
         }
-        solve_rows(rows, group, plan, closing, work);
+        solve_rows(rows, group, plan, closing > 0, work);
         let mut released = false;
         for &ri in group {
             if work.active[ri] && rows[ri].normal_impulse.add(work.value[ri]).is_negative() {
@@ -568,7 +615,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
         // Rows left out that the solution now violates join the next round.
         let mut joined = false;
         for &ri in group {
-            if (work.in_plan[ri] || closing)
+            if (work.in_plan[ri] || ri < closing)
                 && !work.active[ri]
                 && shortfall(&rows[ri], velocities).is_positive()
             {
@@ -582,7 +629,7 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
     }
     for &ri in group {
         let row = &mut rows[ri];
-        let missing = if work.in_plan[ri] || closing {
+        let missing = if work.in_plan[ri] || ri < closing {
             !work.active[ri] || work.is_dependent[ri]
         } else {
             off_plan.is_none_or(|rest| rest[ri])
@@ -606,7 +653,9 @@ pub(crate) fn solve_tree_velocities<S: Scalar>(
 /// in `row_caps`, where it has one), all at once; rows that would have to
 /// pull are released and the rest re-solved. Rows not in `plan` take
 /// sequential corrections after it, those marked in `off_plan` when given
-/// (as in [`solve_tree_velocities`]).
+/// (as in [`solve_tree_velocities`]) and only those below
+/// `off_tree_below` (the rope settling rounds pass the number of rope
+/// rows: see `World::settle_ropes`).
 ///
 /// Rows left out (apart) that the applied correction pushes in or
 /// stretches beyond the slop join a further round, which holds the rows
@@ -627,6 +676,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     side_stiffness: &[S],
     row_caps: &[S],
     off_plan: Option<&[bool]>,
+    off_tree_below: usize,
     work: &mut TreeScratch<S>,
 ) {
     // The correction each row asks for (≤ 0), from the current separation.
@@ -648,11 +698,17 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     // into the rows next to it (released if holding would pull); rows
     // apart stay out.
     mark_plan(group, plan, work);
-    let closing = !side_stiffness.is_empty() && off_plan.is_none() && closes_loops(group, plan);
+    // As in `solve_tree_velocities`: the rope rows off the tree (below
+    // `closing`) closed exactly with it.
+    let closing = if off_plan.is_none() {
+        closes_loops(group, side_stiffness.len(), work)
+    } else {
+        0
+    };
     let mut any = false;
     for &ri in group {
         let row = &rows[ri];
-        if !(work.in_plan[ri] || closing) {
+        if !(work.in_plan[ri] || ri < closing) {
             work.active[ri] = false;
             continue;
         }
@@ -675,14 +731,21 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
         // join a further round: the next tree's exact pass, in the same
         // sweep, corrects what this one pushed in.
         let join = off_plan.is_none();
+        // Rope groups: more rounds, and each pass kept within the reach
+        // of its linearisation (`trust_scale`).
+        let (rounds, reach) = if holds_contacts(group, side_stiffness) {
+            (ROPE_ROUNDS, Some((row_caps, max_correction)))
+        } else {
+            (ROUNDS, None)
+        };
         solve_tree_position_rounds(
             rows,
             group,
             (plan, closing),
             displacements,
-            (slop, join),
+            (slop, join, rounds),
             work,
-            correction,
+            (correction, reach),
         );
         // Rows the exact pass left out as dependent (their pivot vanished:
         // two boxes spawned at one point on the ground, the pair's row
@@ -701,7 +764,7 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     // Rows off the spanning tree: sequential position corrections, after
     // the exact pass (the next iteration's exact pass sees what they moved).
     for &ri in group {
-        if !work.in_plan[ri] && off_plan.is_none_or(|rest| rest[ri]) {
+        if !work.in_plan[ri] && ri < off_tree_below && off_plan.is_none_or(|rest| rest[ri]) {
             let cap = row_caps
                 .get(ri)
                 .map_or(max_correction, |&c| c.min(max_correction));
@@ -710,19 +773,78 @@ pub(crate) fn solve_tree_positions<S: Scalar>(
     }
 }
 
+/// The fraction of one rope group's position solution (`work.value`,
+/// `work.side_value` of its active rows) that keeps every body within the
+/// reach of the pass's linearisation: a body with ropes moves at most the
+/// smallest cap of its ropes (`caps`, an eighth of each rope's length, see
+/// `world::step::solve`), any other at most `most` (`max_correction`),
+/// per axis. 1 when the solution stays within it; otherwise the whole
+/// solution is scaled down alike (a damped Newton step: every row's
+/// correction keeps its share).
+///
+/// Why: ropes and contacts solved in one group meet in rows that are
+/// almost parallel. A rope pulling a body straight into the fixed box it
+/// stands on cannot be shortened except sideways: a rope stretched by 1.3
+/// from an anchor under the box, 5° off the contact's normal, asked for a
+/// correction of 0.25 (its cap) and the exact solve moved the body 2.8
+/// sideways per pass (0.25/sin 5°), round the box and under it. The
+/// linearisation holds only for moves of about the cap: the pass is
+/// damped to it, and the next pass looks again.
+fn trust_scale<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    group: &[usize],
+    caps: &[S],
+    most: S,
+    work: &mut TreeScratch<S>,
+) -> S {
+    for &ri in group {
+        let row = &rows[ri];
+        for slot in [row.a, row.b] {
+            work.drift[slot as usize] = Vec2::ZERO;
+            work.reach[slot as usize] = most;
+        }
+    }
+    for &ri in group {
+        let row = &rows[ri];
+        if let Some(&cap) = caps.get(ri) {
+            for slot in [row.a, row.b] {
+                let reach = &mut work.reach[slot as usize];
+                *reach = (*reach).min(cap);
+            }
+        }
+        if work.active[ri] {
+            apply(row, work.value[ri], &mut work.drift);
+            apply_side(row, work.side_value[ri], &mut work.drift);
+        }
+    }
+    let mut scale = S::ONE;
+    for &ri in group {
+        let row = &rows[ri];
+        for slot in [row.a, row.b] {
+            let moved = work.drift[slot as usize];
+            let far = moved.x.abs().max(moved.y.abs());
+            let reach = work.reach[slot as usize];
+            if far > reach {
+                scale = scale.min(reach.div(far));
+            }
+        }
+    }
+    scale
+}
+
 /// The active-set rounds of [`solve_tree_positions`]: `work` holds the
 /// active rows and their corrections on entry.
 fn solve_tree_position_rounds<S: Scalar>(
     rows: &[ContactConstraint<S>],
     group: &[usize],
-    (plan, closing): (&[TreeRow], bool),
+    (plan, closing): (&[TreeRow], usize),
     displacements: &mut [Vec2<S>],
-    (slop, join): (S, bool),
+    (slop, join, rounds): (S, bool, usize),
     work: &mut TreeScratch<S>,
-    correction: impl Fn(usize, &[Vec2<S>]) -> S,
+    (correction, reach): (impl Fn(usize, &[Vec2<S>]) -> S, Option<(&[S], S)>),
 ) {
-    for _ in 0..ROUNDS {
-        solve_rows(rows, group, plan, closing, work);
+    for _ in 0..rounds {
+        solve_rows(rows, group, plan, closing > 0, work);
         let mut released = false;
         for &ri in group {
             if work.active[ri] && work.value[ri].is_negative() {
@@ -731,10 +853,18 @@ fn solve_tree_position_rounds<S: Scalar>(
             }
         }
         if !released {
+            let scale = reach.map_or(S::ONE, |(caps, most)| {
+                trust_scale(rows, group, caps, most, work)
+            });
             for &ri in group {
                 if work.active[ri] {
-                    apply(&rows[ri], work.value[ri], displacements);
-                    apply_side(&rows[ri], work.side_value[ri], displacements);
+                    let (value, side) = if scale == S::ONE {
+                        (work.value[ri], work.side_value[ri])
+                    } else {
+                        (work.value[ri].mul(scale), work.side_value[ri].mul(scale))
+                    };
+                    apply(&rows[ri], value, displacements);
+                    apply_side(&rows[ri], side, displacements);
                 }
             }
             // Rows left out that the correction stretched (or pushed in)
@@ -743,7 +873,7 @@ fn solve_tree_position_rounds<S: Scalar>(
             let mut joined = false;
             for &ri in group {
                 if join
-                    && (work.in_plan[ri] || closing)
+                    && (work.in_plan[ri] || ri < closing)
                     && !work.active[ri]
                     && correction(ri, displacements).is_negative()
                 {
@@ -753,7 +883,7 @@ fn solve_tree_position_rounds<S: Scalar>(
             if !joined {
                 return;
             }
-            for &ri in group.iter().filter(|&&ri| work.in_plan[ri] || closing) {
+            for &ri in group.iter().filter(|&&ri| work.in_plan[ri] || ri < closing) {
                 let row = &rows[ri];
                 let separation = row.separation.add(
                     (displacements[row.b as usize] - displacements[row.a as usize]).dot(row.normal),

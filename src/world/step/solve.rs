@@ -25,74 +25,118 @@ impl<S: Scalar> World<S> {
         let context = &mut self.step_context;
         let slot_count = context.velocities.len();
         let (slop, gravity) = (self.settings.linear_slop, self.settings.gravity);
-        context.rope_groups.regroup(
-            &context.rope_rows,
-            slot_count,
-            slop,
-            gravity,
-            &mut context.parents,
-        );
-        context.contact_groups.regroup(
-            &context.constraints,
-            slot_count,
-            slop,
-            gravity,
-            &mut context.parents,
-        );
         // One substep of gravity: what resting bodies' velocities differ by
         // at most (L∞ norm of g times h).
         let rest_speed = gravity.x.abs().max(gravity.y.abs()).mul(h);
-        context.rope_groups.classify(
-            &context.rope_rows,
+        context.contact_groups.regroup(
+            &context.constraints,
+            0,
             slot_count,
-            true,
-            &context.velocities,
-            rest_speed,
+            slop,
+            gravity,
+            &mut context.parents,
         );
         context.contact_groups.classify(
             &context.constraints,
             slot_count,
-            false,
+            0,
             &context.velocities,
             rest_speed,
         );
-        let row_count = context.rope_rows.len().max(context.constraints.len());
+        context.joint_rows.clear();
+        if !context.rope_rows.is_empty() {
+            context.joint_rows.extend_from_slice(&context.rope_rows);
+            context.joint_rows.extend_from_slice(&context.constraints);
+            context.joint_groups.regroup(
+                &context.joint_rows,
+                context.rope_rows.len(),
+                slot_count,
+                slop,
+                gravity,
+                &mut context.parents,
+            );
+            context.joint_groups.classify(
+                &context.joint_rows,
+                slot_count,
+                context.rope_rows.len(),
+                &context.velocities,
+                rest_speed,
+            );
+        }
+        let row_count = context.joint_rows.len().max(context.constraints.len());
         context.tree.reserve(slot_count, row_count);
         warm_start(&context.rope_rows, &mut context.velocities);
         warm_start(&context.constraints, &mut context.velocities);
     }
 
-    /// Velocity iterations over rope rows (with their sideways stiffness,
-    /// [`rope_velocity_side_stiffness`]), then contact rows.
+    /// Velocity iterations: with no rope active, over the contact groups;
+    /// otherwise over the joint groups (`StepContext::joint_rows`: ropes,
+    /// with their sideways stiffness [`rope_velocity_side_stiffness`],
+    /// and contacts, a group holding every row that shares a body with
+    /// another), after which the rows are copied back to the rope and
+    /// contact rows.
+    ///
+    /// # Ropes and contacts in one group
+    ///
+    /// A chain draped over a fixed peg, a platform hung by ropes carrying a
+    /// stack, boxes linked by ropes: the ropes and the contacts hold the
+    /// same bodies, and each set is only right given the other. Solved as
+    /// two groups one after the other in every sweep (ropes, then
+    /// contacts), each undid part of the other, and the sweeps carried the
+    /// correction across the boundary one row at a time: a 200-link chain
+    /// over a peg stretched by hundreds of percent, a heavy stack on a
+    /// rope-held platform sank. As one group, the exact tree (or block)
+    /// solve takes both at once; its active set keeps contact impulses
+    /// ≥ 0 and rope impulses ≥ 0 alike (a rope only pulls: its row is the
+    /// contact rule on its slack).
     pub(super) fn solve_velocities(&mut self, h: S) {
         let context = &mut self.step_context;
+        let slop = self.settings.linear_slop;
+        if context.rope_rows.is_empty() {
+            for _ in 0..self.settings.velocity_iterations {
+                let StepContext {
+                    constraints,
+                    contact_groups,
+                    velocities,
+                    rope_block,
+                    tree,
+                    ..
+                } = context;
+                solve_group_list_velocities(
+                    constraints,
+                    contact_groups,
+                    velocities,
+                    slop,
+                    None,
+                    rope_block,
+                    tree,
+                );
+            }
+            return;
+        }
+        let ropes = context.rope_rows.len();
         rope_velocity_side_stiffness(
-            &context.rope_rows,
+            &context.joint_rows[..ropes],
             &context.rope_geometry,
             h,
             &mut context.rope_velocity_side,
         );
         context.rope_side_impulse.clear();
-        context
-            .rope_side_impulse
-            .resize(context.rope_rows.len(), S::ZERO);
-        let slop = self.settings.linear_slop;
+        context.rope_side_impulse.resize(ropes, S::ZERO);
         for iteration in 0..self.settings.velocity_iterations {
             if iteration > 0 {
                 raise_rope_velocity_side_stiffness(
-                    &context.rope_rows,
+                    &context.joint_rows[..ropes],
                     &context.rope_geometry,
                     h,
                     &mut context.rope_velocity_side,
                 );
             }
             let StepContext {
-                rope_rows,
-                rope_groups,
+                joint_rows,
+                joint_groups,
                 rope_velocity_side,
                 rope_side_impulse,
-                constraints,
-                contact_groups,
                 velocities,
                 rope_block,
                 tree,
@@ -103,33 +147,51 @@ impl<S: Scalar> World<S> {
                 accumulated: rope_side_impulse,
             };
             solve_group_list_velocities(
-                rope_rows,
-                rope_groups,
+                joint_rows,
+                joint_groups,
                 velocities,
                 slop,
                 Some(side),
                 rope_block,
                 tree,
             );
-            solve_group_list_velocities(
-                constraints,
-                contact_groups,
-                velocities,
-                slop,
-                None,
-                rope_block,
-                tree,
-            );
         }
+        let (rope_part, contact_part) = context.joint_rows.split_at(ropes);
+        context.rope_rows.copy_from_slice(rope_part);
+        context.constraints.copy_from_slice(contact_part);
     }
 
-    /// Position iterations: each one a pass over the ropes
-    /// ([`rope_position_pass`]: re-linearised, with their sideways
-    /// stiffness), then a pass over the contacts; both move displacements
-    /// only, so correcting penetration or stretch adds no energy.
+    /// Position iterations: with no rope active, a pass over the contact
+    /// groups; otherwise a pass over the joint groups
+    /// ([`rope_position_pass`]: ropes re-linearised, with their sideways
+    /// stiffness, and the contacts that share their bodies). Both move
+    /// displacements only, so correcting penetration or stretch adds no
+    /// energy.
     pub(super) fn solve_positions(&mut self, h: S) {
         let settings = &self.settings;
         let context = &mut self.step_context;
+        if context.rope_rows.is_empty() {
+            for _ in 0..settings.position_iterations {
+                let StepContext {
+                    constraints,
+                    contact_groups,
+                    displacements,
+                    rope_block,
+                    tree,
+                    ..
+                } = context;
+                solve_group_list_positions(
+                    constraints,
+                    contact_groups,
+                    displacements,
+                    settings,
+                    (&[], &[]),
+                    false,
+                    &mut (rope_block, tree),
+                );
+            }
+            return;
+        }
         rope_side_stiffness(
             &context.rope_rows,
             &context.rope_geometry,
@@ -138,23 +200,7 @@ impl<S: Scalar> World<S> {
         );
         rope_correction_caps(&context.rope_geometry, &mut context.rope_correction_cap);
         for _ in 0..settings.position_iterations {
-            rope_position_pass(context, settings);
-            let StepContext {
-                constraints,
-                contact_groups,
-                displacements,
-                rope_block,
-                tree,
-                ..
-            } = context;
-            solve_group_list_positions(
-                constraints,
-                contact_groups,
-                displacements,
-                settings,
-                (&[], &[]),
-                &mut (rope_block, tree),
-            );
+            rope_position_pass(context, settings, false);
         }
     }
 }
@@ -306,22 +352,26 @@ fn fill_side_stiffness<S: Scalar>(
     }));
 }
 
-/// One position pass over the rope rows: re-linearised at the current
+/// One position pass over the joint rows (ropes, and the contacts in
+/// their groups; every contact when any rope is active, see
+/// `StepContext::joint_rows`): the rope rows re-linearised at the current
 /// displacements (so the pass sees each rope's true length and direction:
-/// a Newton step of the projection onto the ropes' lengths), then solved
-/// like the position iterations solve contacts, with each rope's sideways
-/// stiffness ([`rope_side_stiffness`]) in the tree solve.
+/// a Newton step of the projection onto the ropes' lengths), then every
+/// group solved like the position iterations solve contacts, with each
+/// rope's sideways stiffness ([`rope_side_stiffness`]) in the tree solve.
 ///
-/// Reads the context's rope rows, groups, geometry (each row's anchor
-/// offset at the start of the substep and length) and sideways stiffness,
-/// and moves its displacements.
+/// Reads the context's joint rows and groups, rope geometry (each row's
+/// anchor offset at the start of the substep and length) and sideways
+/// stiffness, and moves its displacements.
 pub(super) fn rope_position_pass<S: Scalar>(
     context: &mut StepContext<S>,
     settings: &WorldSettings<S>,
+    settling: bool,
 ) {
     let StepContext {
         rope_rows,
-        rope_groups,
+        joint_rows,
+        joint_groups,
         rope_geometry,
         rope_side_stiffness,
         rope_correction_cap,
@@ -330,13 +380,15 @@ pub(super) fn rope_position_pass<S: Scalar>(
         tree,
         ..
     } = context;
-    relinearise_rope_rows(rope_rows, rope_geometry, displacements);
+    let ropes = rope_rows.len();
+    relinearise_rope_rows(&mut joint_rows[..ropes], rope_geometry, displacements);
     solve_group_list_positions(
-        rope_rows,
-        rope_groups,
+        joint_rows,
+        joint_groups,
         displacements,
         settings,
         (rope_side_stiffness, rope_correction_cap),
+        settling,
         &mut (rope_block, tree),
     );
 }
@@ -355,7 +407,12 @@ fn solve_group_list_velocities<S: Scalar>(
     block: &mut BlockScratch<S>,
     tree: &mut TreeScratch<S>,
 ) {
+    // The rope rows come first: a group holds a rope when its first row is
+    // one. A group of contacts alone is solved as a contact group.
+    let ropes = side.as_ref().map_or(0, |sr| sr.stiffness.len());
     for (group, solve, _) in groups.iter_classified() {
+        let holds_rope = group.first().is_some_and(|&ri| ri < ropes);
+        let mut side = side.as_mut().filter(|_| holds_rope);
         match solve {
             GroupSolve::Sequential => {
                 match contiguous(group) {
@@ -445,13 +502,16 @@ fn contiguous(group: &[usize]) -> Option<core::ops::Range<usize>> {
     (last - first + 1 == group.len()).then_some(first..last + 1)
 }
 
-/// One position pass over grouped rows (same split as the velocities).
+/// One position pass over grouped rows (same split as the velocities);
+/// `settling` for the rope settling rounds: groups without a rope are
+/// left alone, and contacts off a group's spanning tree are not corrected.
 fn solve_group_list_positions<S: Scalar>(
     rows: &[ContactConstraint<S>],
     groups: &RowGroups,
     displacements: &mut [Vec2<S>],
     settings: &WorldSettings<S>,
-    (side_stiffness, row_caps): (&[S], &[S]),
+    (rope_side_stiffness, rope_caps): (&[S], &[S]),
+    settling: bool,
     (block, tree): &mut (&mut BlockScratch<S>, &mut TreeScratch<S>),
 ) {
     let (slop, beta, max) = (
@@ -459,7 +519,22 @@ fn solve_group_list_positions<S: Scalar>(
         settings.position_correction,
         settings.max_correction,
     );
+    // The rope rows come first (one stiffness per rope row): a group holds
+    // a rope when its first row is one.
+    let ropes = rope_side_stiffness.len();
+    // The settling rounds correct no contact between two moving bodies
+    // off the spanning tree (see `World::settle_ropes`).
+    let off_tree_below = if settling { ropes } else { usize::MAX };
     for (group, _, solve) in groups.iter_classified() {
+        let holds_rope = group.first().is_some_and(|&ri| ri < ropes);
+        if settling && !holds_rope {
+            continue;
+        }
+        let (side_stiffness, row_caps) = if holds_rope {
+            (rope_side_stiffness, rope_caps)
+        } else {
+            (&[][..], &[][..])
+        };
         match solve {
             GroupSolve::Sequential => match contiguous(group) {
                 Some(run) => {
@@ -495,6 +570,7 @@ fn solve_group_list_positions<S: Scalar>(
                 side_stiffness,
                 row_caps,
                 None,
+                off_tree_below,
                 tree,
             ),
             // The position pass solves the first (load-path) tree exactly
@@ -515,6 +591,7 @@ fn solve_group_list_positions<S: Scalar>(
                         side_stiffness,
                         row_caps,
                         None,
+                        off_tree_below,
                         tree,
                     );
                 }
