@@ -34,7 +34,7 @@ const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7d009b781f2d0f38),
     ("pyramid", 0xc38e0c9d6a324827),
     ("balls", 0xeb75b7fff6c7bcb0),
-    ("bullets", 0x1fc541d2ff7bd5d2),
+    ("bullets", 0xe2394485569ea57a),
     ("mixed", 0x65dae0f1c65828f9),
 ];
 // END GOLDEN

@@ -15,6 +15,7 @@ use super::confined_pair::confined_contact;
 use super::covered_corner::covered_corner;
 use super::deflected_sweep::{Side, deflected_impact, earlier_turn};
 use super::face_past_walls::face_past_walls;
+use super::implied_rows::implied_rows;
 use super::level_seam::level_seam;
 use crate::dynamics::{Body, BodyKind};
 use crate::solver::restitution::BounceCandidate;
@@ -472,6 +473,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         if to_wake.is_empty() {
             self.covered_corners(&body, scratch, rows, bounces);
             self.confined_pairs(&body, scratch, rows, bounces);
+            self.mark_implied_rows(scratch, rows);
         }
         to_wake.sort_unstable();
         to_wake.dedup();
@@ -880,6 +882,24 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             let warm = (row.normal_impulse, row.tangent_impulse);
             self.replace_row(index, (sa, sb), contact, warm, rows, bounces);
         }
+    }
+
+    /// Marks the speculative rows two other rows imply through a movable
+    /// body between (`collision::implied_rows`) in the scratch's
+    /// `implied.implied`, one entry per row; the grouping reads them.
+    fn mark_implied_rows(&self, scratch: &mut NarrowScratch<S>, rows: &[ContactConstraint<S>]) {
+        let movable = |i: u32| {
+            self.inverse_masses
+                .get(i as usize)
+                .is_some_and(|w| w.is_positive())
+        };
+        implied_rows(
+            rows,
+            self.velocities.len(),
+            movable,
+            self.linear_slop,
+            &mut scratch.implied,
+        );
     }
 
     /// Rows of two movable boxes (or circles) more than the slop deep whose overlap

@@ -5,6 +5,7 @@ use crate::solver::restitution::BounceCandidate;
 use crate::solver::row::ContactConstraint;
 
 use super::deflected_sweep::MeetingRows;
+use super::implied_rows::ImpliedScratch;
 
 /// The narrow phase's working memory for its looks after the loop (the
 /// turned sweeps, `collision::deflected_sweep`; the covered corners,
@@ -40,4 +41,6 @@ pub(crate) struct NarrowScratch<S: Scalar> {
     /// Face rows of movable bodies with immovable ones: (body, normal from
     /// it, gap).
     pub(crate) walls: Vec<(u32, Vec2<S>, S)>,
+    /// Implied rows (`collision::implied_rows`).
+    pub(crate) implied: ImpliedScratch<S>,
 }

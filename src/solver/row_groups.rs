@@ -100,16 +100,38 @@ impl RowGroups {
     /// tier still finds the columns (without it, side rows taken first
     /// made the tree, the columns' rows fell off it, and a wall of boxes
     /// 1e-5 apart sagged 0.0025 in its first step).
+    ///
+    /// `implied` (one entry per contact row, the rows after the `ropes`
+    /// rope rows; empty: none) marks the rows two other rows imply through
+    /// a movable body between ([`crate::collision`]'s implied rows). They
+    /// are taken last and close no cycle that counts: a stack of thin
+    /// boxes hit by a fast ball, whose rows reach through the boxes to
+    /// every box below and to the ground, is still a tree. In a group that
+    /// is a tree without them they are off it (the rows with a body of
+    /// infinite mass too), so its exact solve leaves them to the
+    /// sequential update after it, which finds them satisfied; in a group
+    /// with cycles of its own they are rows as any other.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn regroup<S: Scalar>(
         &mut self,
         rows: &[ContactConstraint<S>],
         ropes: usize,
+        implied: &[bool],
         slot_count: usize,
         slop: S,
         gravity: Vec2<S>,
         parents: &mut Vec<u32>,
     ) {
         let ropes = ropes.min(rows.len());
+        // A marking of other rows (stale or absent) counts as none.
+        let implied = if implied.len() == rows.len() - ropes {
+            implied
+        } else {
+            &[]
+        };
+        let is_implied =
+            |ri: usize| ri >= ropes && implied.get(ri - ropes).copied().unwrap_or(false);
+        let any_implied = implied.iter().any(|&m| m);
         islands::reset(parents, slot_count);
         self.root_flags.clear();
         self.root_flags.resize(slot_count, 0);
@@ -153,7 +175,7 @@ impl RowGroups {
                 .take(kind_rows.end)
                 .skip(kind_rows.start)
             {
-                if t != pass {
+                if t != pass || (any_implied && is_implied(ri)) {
                     continue;
                 }
                 let (ra, rb) = (islands::find(parents, row.a), islands::find(parents, row.b));
@@ -166,6 +188,25 @@ impl RowGroups {
                     parents[gone as usize] = keep;
                     let flags = self.root_flags[gone as usize]
                         | if apart { APART_EDGE } else { TOUCHING_EDGE };
+                    self.root_flags[keep as usize] |= flags;
+                }
+            }
+        }
+        // The implied rows between dynamic bodies, last: their ends are
+        // joined by the rows implying them, so they close cycles, which do
+        // not count (no flag).
+        if any_implied {
+            for (ri, (row, &t)) in rows.iter().zip(&self.row_tier).enumerate().skip(ropes) {
+                if t == NO_TIER || !is_implied(ri) {
+                    continue;
+                }
+                let (ra, rb) = (islands::find(parents, row.a), islands::find(parents, row.b));
+                if ra == rb {
+                    self.off_tree[ri] = true;
+                } else {
+                    let (keep, gone) = if ra < rb { (ra, rb) } else { (rb, ra) };
+                    parents[gone as usize] = keep;
+                    let flags = self.root_flags[gone as usize] | APART_EDGE;
                     self.root_flags[keep as usize] |= flags;
                 }
             }
@@ -210,6 +251,16 @@ impl RowGroups {
             self.row_group.push(group);
             if let Some(count) = self.starts.get_mut(group as usize) {
                 *count += 1;
+            }
+        }
+        // The implied rows with a body of infinite mass leave the spanning
+        // tree of a group that is a tree without them (the others are off
+        // it already).
+        if any_implied {
+            for (ri, (&t, &g)) in self.row_tier.iter().zip(&self.row_group).enumerate() {
+                if t == NO_TIER && is_implied(ri) && !self.cyclic[g as usize] {
+                    self.off_tree[ri] = true;
+                }
             }
         }
         // Counts → starts (exclusive prefix sums), then place the rows in
@@ -618,7 +669,7 @@ mod tests {
     fn grouped(rows: &[ContactConstraint<Fx>], slots: usize) -> Vec<Vec<usize>> {
         let mut groups = RowGroups::default();
         let mut parents = Vec::new();
-        groups.regroup(rows, 0, slots, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(rows, 0, &[], slots, Fx::ZERO, Vec2::ZERO, &mut parents);
         groups.iter().map(<[usize]>::to_vec).collect()
     }
 
@@ -653,7 +704,7 @@ mod tests {
             row(4, 5, 1, 1),
             row(6, 7, 1, 1),
         ];
-        groups.regroup(&rows, 0, 8, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(&rows, 0, &[], 8, Fx::ZERO, Vec2::ZERO, &mut parents);
         assert_eq!(groups.iter().count(), 3);
         assert_eq!(groups.cyclic, vec![true, false, true]);
         let trees = |groups: &RowGroups| -> Vec<bool> {
@@ -677,13 +728,13 @@ mod tests {
         let mut groups = RowGroups::default();
         let mut parents = Vec::new();
         let first = [row(0, 1, 1, 1), row(2, 3, 1, 1), row(1, 2, 1, 1)];
-        groups.regroup(&first, 0, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(&first, 0, &[], 4, Fx::ZERO, Vec2::ZERO, &mut parents);
         assert_eq!(groups.iter().count(), 1);
         let second = [row(0, 1, 1, 1), row(2, 3, 1, 1)];
-        groups.regroup(&second, 0, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup(&second, 0, &[], 4, Fx::ZERO, Vec2::ZERO, &mut parents);
         let got: Vec<Vec<usize>> = groups.iter().map(<[usize]>::to_vec).collect();
         assert_eq!(got, vec![vec![0], vec![1]]);
-        groups.regroup::<Fx>(&[], 0, 4, Fx::ZERO, Vec2::ZERO, &mut parents);
+        groups.regroup::<Fx>(&[], 0, &[], 4, Fx::ZERO, Vec2::ZERO, &mut parents);
         assert_eq!(groups.iter().count(), 0);
     }
 }

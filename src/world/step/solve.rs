@@ -28,9 +28,11 @@ impl<S: Scalar> World<S> {
         // One substep of gravity: what resting bodies' velocities differ by
         // at most (L∞ norm of g times h).
         let rest_speed = gravity.x.abs().max(gravity.y.abs()).mul(h);
+        let implied = &context.narrow_scratch.implied.implied;
         context.contact_groups.regroup(
             &context.constraints,
             0,
+            implied,
             slot_count,
             slop,
             gravity,
@@ -50,6 +52,7 @@ impl<S: Scalar> World<S> {
             context.joint_groups.regroup(
                 &context.joint_rows,
                 context.rope_rows.len(),
+                implied,
                 slot_count,
                 slop,
                 gravity,
