@@ -5,7 +5,7 @@
 //! pair-ticks (bodies + touching pairs per tick, `src/cost.rs`): a replay
 //! whose full verify could cost more is re-simulated only for its first
 //! ticks (with the same commands and checkpoint comparison, through the
-//! public API, metering the real cost after every tick), so the fuzzer
+//! public API, estimating every tick before it and metering it after), so the fuzzer
 //! keeps its speed.
 //!
 //! An accepted replay also round-trips: `to_bytes` → `from_bytes` gives
@@ -18,7 +18,7 @@
 
 use clockwork2d::prelude::{Fx, World};
 use clockwork2d::replay::Replay;
-use clockwork2d_fuzz::cost::pairs_near;
+use clockwork2d_fuzz::cost::{most_pairs, tick_cost};
 use clockwork2d_fuzz::frame::{Kind, repaired};
 use libfuzzer_sys::fuzz_target;
 
@@ -34,15 +34,24 @@ fn exercise(bytes: &[u8]) {
         Ok(copy) => assert!(copy.to_bytes() == again, "replay bytes do not round-trip"),
         Err(e) => panic!("a decoded replay's own bytes were refused: {e}"),
     }
-    // An upper bound on the cost of one tick of the full verify: the
-    // initial bodies and their pairs, plus every spawn command as a body
-    // that may touch every other body.
+    // An upper bound on the cost of the full verify, which cannot be
+    // metered as it runs: the first tick by the pairs near the initial
+    // bodies, every later tick by the most pairs the bodies can form (one
+    // tick can multiply the pairs: see `src/cost.rs`), and every spawn
+    // command as a body that may touch every other body.
     let bodies = replay.initial().body_count() as u64 + 1;
     let commands = replay.commands().len() as u64;
-    let per_tick = bodies
-        .saturating_add(pairs_near(replay.initial(), BUDGET.saturating_add(1)))
-        .saturating_add(commands.saturating_mul(bodies.saturating_add(commands)));
-    if replay.ticks().saturating_mul(per_tick) <= BUDGET {
+    let spawned = commands.saturating_mul(bodies.saturating_add(commands));
+    let first = tick_cost(replay.initial(), BUDGET.saturating_add(1)).saturating_add(spawned);
+    let later = bodies
+        .saturating_add(commands)
+        .saturating_add(most_pairs(bodies.saturating_add(commands)))
+        .saturating_add(spawned);
+    let full_cost = match replay.ticks() {
+        0 => 0,
+        ticks => first.saturating_add((ticks - 1).saturating_mul(later)),
+    };
+    if full_cost <= BUDGET {
         if let Ok(report) = replay.verify() {
             assert_eq!(report.ticks, replay.ticks());
             assert_eq!(report.final_tick, replay.final_tick());
@@ -55,12 +64,10 @@ fn exercise(bytes: &[u8]) {
 
 /// Re-simulates the first ticks with the recorded commands, as `verify`
 /// does, stopping at the first checkpoint that differs or when the budget
-/// is spent (metered after every tick; the first tick is estimated).
+/// is spent (every tick estimated before it is stepped and metered after).
 fn partial_verify(replay: &Replay<Fx>) {
     let mut world: World<Fx> = replay.initial().clone();
     let mut spent = 0u64;
-    let mut next =
-        (world.body_count() as u64).saturating_add(pairs_near(&world, BUDGET.saturating_add(1)));
     let mut commands = replay.commands().iter().peekable();
     let mut checkpoints = replay.checkpoints().iter().peekable();
     let mut batch = Vec::new();
@@ -76,12 +83,15 @@ fn partial_verify(replay: &Replay<Fx>) {
         // Each command may add a body touching every other one.
         let extra = (batch.len() as u64)
             .saturating_mul((world.body_count() as u64).saturating_add(batch.len() as u64));
-        if spent.saturating_add(next).saturating_add(extra) > BUDGET {
+        let left = BUDGET.saturating_sub(spent);
+        let estimate = tick_cost(&world, left.saturating_add(1)).saturating_add(extra);
+        if estimate > left {
             return;
         }
         world.step_with(&batch);
-        next = (world.body_count() as u64).saturating_add(world.touching_pairs().count() as u64);
-        spent = spent.saturating_add(next);
+        let reported =
+            (world.body_count() as u64).saturating_add(world.touching_pairs().count() as u64);
+        spent = spent.saturating_add(estimate.max(reported));
         while checkpoints.peek().is_some_and(|c| c.tick < world.tick()) {
             checkpoints.next();
         }

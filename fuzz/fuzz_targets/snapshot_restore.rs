@@ -4,8 +4,8 @@
 //! (restore validates; here that is checked again through its own
 //! snapshot), and so does every world it steps into: it steps 10 ticks, and
 //! at the start and after every tick its snapshot restores to the same
-//! hash and the same bytes, and the restored copy steps in lockstep with
-//! the original.
+//! hash and the same bytes, the restored copy steps in lockstep with the
+//! original, and no body leaves a tick faster than `max_speed` (per axis).
 //!
 //! Each input is tried raw (frame checks) and with its payload length and
 //! checksum repaired (payload decoding and validation).
@@ -45,6 +45,14 @@ fn exercise(bytes: &[u8]) {
             "the restored copy diverged at tick {tick} after the restore"
         );
         assert_roundtrip(world, &format!("tick {tick}"));
+        let max_speed = world.settings().max_speed;
+        for (id, body) in world.bodies() {
+            let v = body.velocity();
+            assert!(
+                v.x.abs() <= max_speed && v.y.abs() <= max_speed,
+                "{id} left tick {tick} at {v:?}, above max_speed {max_speed}"
+            );
+        }
     });
 }
 

@@ -11,7 +11,8 @@
 //!   snapshot bytes are identical to those before the command).
 //! * After every step: every body that is not frozen has its centre inside
 //!   the world bounds, and every body frozen during the step has its
-//!   `Frozen` event in that step.
+//!   `Frozen` event in that step; no body's velocity has a component above
+//!   `max_speed`.
 //! * After every step: no overlap deeper than the documented bound persists
 //!   between a dynamic and a fixed body (see [`crate::overlap`]).
 //! * At the script's restore points, the world is snapshotted and restored
@@ -473,7 +474,14 @@ impl Run {
         self.world.step();
         self.steps += 1;
         let bounds = self.world.settings().bounds;
+        let max_speed = self.world.settings().max_speed;
         for (id, b) in self.world.bodies() {
+            let v = b.velocity();
+            assert!(
+                v.x.abs() <= max_speed && v.y.abs() <= max_speed,
+                "{id} left tick {} at {v:?}, above max_speed {max_speed}",
+                self.world.tick()
+            );
             if b.is_frozen() {
                 if !frozen_before.contains(&id) {
                     assert!(

@@ -65,9 +65,18 @@ impl<S: Scalar> World<S> {
 
     /// Positions and velocities back into the bodies; bodies whose centre
     /// left the bounds are frozen.
+    ///
+    /// A velocity is stored clamped per axis to `max_speed`, as the setting
+    /// promises of every body between steps: the solve can leave a body
+    /// faster (a heavy body at `max_speed` striking a light one with
+    /// restitution 1 throws it at twice that; a restored snapshot's cached
+    /// warm-start impulse is any non-negative number), and the loading of the
+    /// next step clamps only after adding gravity.
     pub(super) fn write_back(&mut self) {
         let bounds = self.settings.bounds;
         let (lo, hi) = (bounds.min(), bounds.max());
+        let max = self.settings.max_speed;
+        let limit = Vec2::new(max, max);
         for (i, slot) in self.slots.iter_mut().enumerate() {
             let Some(body) = slot.body.as_mut() else {
                 continue;
@@ -77,7 +86,7 @@ impl<S: Scalar> World<S> {
             }
             body.position += self.step_context.displacements[i];
             if body.kind == BodyKind::Dynamic {
-                body.velocity = self.step_context.velocities[i];
+                body.velocity = self.step_context.velocities[i].clamp(-limit, limit);
             }
             if !bounds.contains_point(body.position) {
                 body.position = body.position.clamp(lo, hi);
