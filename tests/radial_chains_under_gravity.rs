@@ -84,6 +84,8 @@ fn chain_of(
             thrown: g == 0.0,
             friction: None,
             ground: None,
+            drop: 0.0,
+            free: false,
         },
     )
 }
@@ -100,6 +102,10 @@ struct Variant {
     friction: Option<f64>,
     /// The top of a fixed ground (a wide box) below the pivot, if any.
     ground: Option<f64>,
+    /// A downward speed every body starts with (added to any throw).
+    drop: f64,
+    /// No spring to the pivot: the chain is free.
+    free: bool,
 }
 
 /// [`chain_of`] with a [`Variant`].
@@ -133,12 +139,12 @@ fn chain_with(
             .position(vec2(at.0, at.1))
             .velocity(if variant.thrown {
                 if i % 2 == 0 {
-                    vec2(1.0, 0.5)
+                    vec2(1.0, 0.5 - variant.drop)
                 } else {
-                    vec2(-0.5, 1.0)
+                    vec2(-0.5, 1.0 - variant.drop)
                 }
             } else {
-                vec2(0.0, 0.0)
+                vec2(0.0, -variant.drop)
             });
         if let Some(friction) = variant.friction {
             def = def.friction(fx(friction));
@@ -161,11 +167,15 @@ fn chain_with(
         } else {
             Constraint::radial_spring(above, Anchor::Body(body), fx(SEGMENT), fx(k), fx(0.0))
         };
-        world.add_constraint(constraint).expect("spring");
+        let free_end = variant.free && i == 0;
+        if !free_end {
+            world.add_constraint(constraint).expect("spring");
+        }
         bendy.push(is_bendy.then_some(step));
         bodies.push(body);
         masses.push(world.body(body).expect("link").mass().to_f64());
-        stiffness.push(k);
+        // A free chain's first body has no spring: no energy, no blend.
+        stiffness.push(if free_end { 0.0 } else { k });
     }
     Chain {
         world,
@@ -421,6 +431,8 @@ fn reversed_thrown_and_other_sized_radial_chains_never_gain_energy() {
             thrown,
             friction,
             ground: None,
+            drop: 0.0,
+            free: false,
         };
         // Released chains start level; thrown ones hang.
         let mut c = chain_with(link, g, (links, ratio, omega_h, !thrown, 0), variant);
@@ -459,15 +471,14 @@ fn reversed_thrown_and_other_sized_radial_chains_never_gain_energy() {
 /// hits at about 5 units/s), end or first body 1× or 100×, ω·h 3 to 300,
 /// friction 0, the default 0.6, and 1.5. The ground does no work, so the
 /// bound is the family's. Contacts on bodies of a stiff group are solved
-/// with the group (`spring_direct.rs`); but the contact solve that follows
-/// the spring solve still acts on the bodies of a stiff group alone
-/// (impacts, position correction), and a hard strike gains energy: 21 of
-/// the 54 cases fail (largest 43 J: 5 links of 0.001, ×100 end, ω·h 300,
-/// frictionless), against 37 on main before this (up to 3.8e8 J) and 35
-/// with the contacts carried by the sweeps (up to 5.6e7 J). Kept as the
-/// open part of the problem.
+/// with the group (`spring_direct.rs`) and are final: when the contact
+/// solve that follows still acted on them (the struck body answering
+/// alone), 21 of the 54 cases gained energy (largest 43 J: 5 links of
+/// 0.001, ×100 end, ω·h 300, frictionless; 37 on the main of before the
+/// coupling, up to 3.8e8 J), and a heavy first link dragging at
+/// friction 1.5 (2 links, ω·h 3) gained 4.1 J: its friction impulse, solved
+/// by scalar Gauss–Seidel against the group, ended at 3.8× its cone.
 #[test]
-#[ignore = "open (issue 13, N4): 21 of 54 cases still gain energy (main: 37, up to 3.8e8 J); run with --ignored"]
 #[allow(clippy::float_arithmetic)]
 fn radial_chains_striking_and_dragging_on_the_ground_never_gain_energy() {
     let ticks = if cfg!(debug_assertions) { 120 } else { 600 };
@@ -491,6 +502,8 @@ fn radial_chains_striking_and_dragging_on_the_ground_never_gain_energy() {
                         thrown: false,
                         friction,
                         ground: Some(top),
+                        drop: 0.0,
+                        free: false,
                     };
                     let mut c = chain_with(link, G, (links, ratio, omega_h, true, 0), variant);
                     let e0 = c.energy();
@@ -525,6 +538,229 @@ fn radial_chains_striking_and_dragging_on_the_ground_never_gain_energy() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
     assert!(ran >= 12, "only {ran} cases ran");
+}
+
+/// More chains that strike the ground, beyond the family above: 3 and 10
+/// links of 0.1 or 0.003, ends 1× or 1000× a link (30× next to the pivot),
+/// ω·h 10 and 100, radial chains and mixed ones (every second spring
+/// bendy, holding its rest offset in both axes), released level to swing
+/// onto a ground below the pivot (0.3 for 3 links, 0.6 for 10), or
+/// slammed at 3 units/s onto a ground just under them (2·10⁻⁴ below the
+/// bodies, less than a bendy spring's swing `v/ω` there: every body
+/// strikes at once and then drags), chains of bendy springs only too; frictionless or with friction 1.0. Every case must
+/// reach the ground (a body within 10⁻³ of it), and the energy `E_θ`
+/// never rises above its start by more than the family's `N·2⁻²⁰·E_s`,
+/// `E_s` counting the launch's kinetic energy too (the most the chain
+/// can exchange besides its fall). The ground does no work.
+///
+/// Before the contacts solved with a stiff group were kept as final (the
+/// contact solve answered for the struck body alone) and their friction
+/// was solved per contact as a block, 18 of these 140 cases gained energy
+/// (up to 182 J: 3 links of 0.1, ×30 first, ω·h 10, slammed, friction 1).
+#[test]
+#[allow(clippy::float_arithmetic)]
+fn radial_mixed_and_bendy_chains_slammed_or_swung_onto_the_ground_never_gain_energy() {
+    let ticks = if cfg!(debug_assertions) { 120 } else { 600 };
+    let mut failures = Vec::new();
+    let mut ran = 0;
+    for &links in &[3usize, 10] {
+        for &(link, ratio, heavy_first) in &[
+            (LINK, 1.0, false),
+            (LINK, 1000.0, false),
+            (LINK, 30.0, true),
+            (0.003, 1.0, false),
+        ] {
+            for &omega_h in &[10.0, 100.0] {
+                // (bendy every, slammed)
+                for &(bendy_every, slammed) in
+                    &[(0, false), (0, true), (2, false), (2, true), (1, true)]
+                {
+                    for &friction in &[Some(0.0), Some(1.0)] {
+                        if cfg!(debug_assertions) && (links == 10 || omega_h == 100.0) {
+                            continue;
+                        }
+                        let heaviest_pivot_end = if heavy_first { ratio * link } else { link };
+                        if omega_h * omega_h / (H * H) * heaviest_pivot_end > f64::from(1u32 << 24)
+                        {
+                            continue;
+                        }
+                        let (top, drop) = if slammed {
+                            (-0.0202, 3.0)
+                        } else if links == 3 {
+                            (-0.3, 0.0)
+                        } else {
+                            (-0.6, 0.0)
+                        };
+                        let variant = Variant {
+                            heavy_first,
+                            thrown: false,
+                            friction,
+                            ground: Some(top),
+                            drop,
+                            free: false,
+                        };
+                        let mut c = chain_with(
+                            link,
+                            G,
+                            (links, ratio, omega_h, true, bendy_every),
+                            variant,
+                        );
+                        let e0 = c.energy();
+                        let launch: f64 = c.masses.iter().map(|m| 0.5 * m * drop * drop).sum();
+                        let per_tick = (c.energy_scale() + launch) / f64::from(1u32 << 20);
+                        let mut worst = f64::NEG_INFINITY;
+                        let mut closest = f64::INFINITY;
+                        let name = format!(
+                            "{links} links of {link}, ×{ratio} {}, ω·h {omega_h}, bendy every \
+                             {bendy_every}, {}, friction {friction:?}",
+                            if heavy_first { "first" } else { "last" },
+                            if slammed { "slammed" } else { "swung" }
+                        );
+                        for tick in 1..=ticks {
+                            c.world.step();
+                            let e = c.energy();
+                            let allowance = tick as f64 * per_tick;
+                            if e - e0 - allowance > 0.0 && worst <= 0.0 {
+                                failures.push(format!(
+                                    "{name}: tick {tick} energy rose {:.4e} J (allowance \
+                                     {allowance:.3e})",
+                                    e - e0
+                                ));
+                            }
+                            worst = worst.max(e - e0 - allowance);
+                            for &body in &c.bodies {
+                                closest = closest.min(pos(&c.world, body).1 - 0.02 - top);
+                            }
+                        }
+                        ran += 1;
+                        println!(
+                            "{name}: E−E₀ at the end {:.4e} J, largest rise over the allowance \
+                             {worst:.3e} J, closest to the ground {closest:.2e}",
+                            c.energy() - e0
+                        );
+                        assert!(
+                            closest <= 1e-3,
+                            "{name}: never reached the ground ({closest})"
+                        );
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failed:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+    assert!(ran >= 40, "only {ran} cases ran");
+}
+
+/// Free chains (no pivot) dropped onto the ground: 3 and 10 links of 0.1
+/// or 0.003, ends 1× or 100× a link, ω·h 10 and 100, radial or every
+/// second spring bendy, released level 0.5 above the ground (every body
+/// strikes at about 3 units/s at once) or thrown (each body sideways, one
+/// way and the next the other: the chain folds and tumbles onto it),
+/// friction 0 or 1. A free group's energy safeguard pulls back towards
+/// its mean velocity rather than rest, so this is the family the pivot
+/// does not cover. `E_s` here is the chain's whole height energy above the
+/// ground plus the throw's kinetic energy; the bound as above. Every case
+/// must reach the ground.
+///
+/// Open: 18 of the 96 cases gain energy, every one a thrown (tumbling)
+/// chain striking the ground, most at ω·h 100 (up to 1.0e3 J: 3 links of
+/// 0.1, ×100 end, frictionless); nothing is gained in free flight before
+/// the strike (the same chains dropped from 100 units above gain it at
+/// the strike, tick ≈ 273). Suspected: the energy safeguard pulls an
+/// unconverged free group back towards its mean velocity, which carries
+/// the struck body on into the ground past its (final) contact rows.
+#[test]
+#[ignore = "open (issue 13, N4): 18 of 96 free tumbling chains gain energy at the strike; run with --ignored"]
+#[allow(clippy::float_arithmetic)]
+fn free_stiff_chains_dropped_or_thrown_onto_the_ground_never_gain_energy() {
+    let ticks = if cfg!(debug_assertions) { 120 } else { 600 };
+    let mut failures = Vec::new();
+    let mut ran = 0;
+    for &links in &[3usize, 10] {
+        for &(link, ratio) in &[(LINK, 1.0), (LINK, 100.0), (0.003, 1.0)] {
+            for &omega_h in &[10.0, 100.0] {
+                for &bendy_every in &[0usize, 2] {
+                    for &thrown in &[false, true] {
+                        for &friction in &[Some(0.0), Some(1.0)] {
+                            if cfg!(debug_assertions) && (links == 10 || omega_h == 100.0) {
+                                continue;
+                            }
+                            let top = -0.5;
+                            let variant = Variant {
+                                heavy_first: false,
+                                thrown,
+                                friction,
+                                ground: Some(top),
+                                drop: 0.0,
+                                free: true,
+                            };
+                            let mut c = chain_with(
+                                link,
+                                G,
+                                (links, ratio, omega_h, true, bendy_every),
+                                variant,
+                            );
+                            let e0 = c.energy();
+                            let scale: f64 = c
+                                .bodies
+                                .iter()
+                                .zip(&c.masses)
+                                .map(|(&b, m)| {
+                                    let (q, v) = (pos(&c.world, b), vel(&c.world, b));
+                                    m * G * (q.1 - top) + 0.5 * m * (v.0 * v.0 + v.1 * v.1)
+                                })
+                                .sum();
+                            let per_tick = scale / f64::from(1u32 << 20);
+                            let mut worst = f64::NEG_INFINITY;
+                            let mut closest = f64::INFINITY;
+                            let name = format!(
+                                "free: {links} links of {link}, ×{ratio}, ω·h {omega_h}, bendy \
+                                 every {bendy_every}, thrown {thrown}, friction {friction:?}"
+                            );
+                            for tick in 1..=ticks {
+                                c.world.step();
+                                let e = c.energy();
+                                let allowance = tick as f64 * per_tick;
+                                if e - e0 - allowance > 0.0 && worst <= 0.0 {
+                                    failures.push(format!(
+                                        "{name}: tick {tick} energy rose {:.4e} J (allowance \
+                                         {allowance:.3e})",
+                                        e - e0
+                                    ));
+                                }
+                                worst = worst.max(e - e0 - allowance);
+                                for &body in &c.bodies {
+                                    closest = closest.min(pos(&c.world, body).1 - 0.02 - top);
+                                }
+                            }
+                            ran += 1;
+                            println!(
+                                "{name}: E−E₀ at the end {:.4e} J, largest rise over the \
+                                 allowance {worst:.3e} J, closest to the ground {closest:.2e}",
+                                c.energy() - e0
+                            );
+                            assert!(
+                                closest <= 1e-3,
+                                "{name}: never reached the ground ({closest})"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failed:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+    assert!(ran >= 40, "only {ran} cases ran");
 }
 
 /// Two radial springs in series (rest 0.2, a link of 0.1 and an end 1× to

@@ -411,13 +411,7 @@ fn restart<S: Scalar>(
     for geometry in radial.iter_mut() {
         geometry.applied = Vec2::ZERO;
     }
-    for row in supports.rows.iter_mut() {
-        row.impulse = S::ZERO;
-        row.held = false;
-    }
-    for pushed in supports.pushed.iter_mut() {
-        *pushed = Vec2::ZERO;
-    }
+    supports.clear_impulses();
     position_velocities.copy_from_slice(velocities);
 }
 

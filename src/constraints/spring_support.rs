@@ -17,7 +17,10 @@
 //! only the spring solve's view of the contacts: they are taken back out
 //! of the position velocities when the sweeps end (exactly: each slot's
 //! pushes are summed in [`SupportScratch::pushed`]), and the contact solve
-//! then finds its own, warm started as always.
+//! then finds its own, warm started as always. The exception are the rows
+//! solved with a stiff group (`held`, `spring_direct.rs`): their impulses
+//! are final, their pushes stay ([`SupportScratch::kept`]), and the contact
+//! solve leaves them (`world/step/constraints.rs`).
 
 use crate::math::{Scalar, Vec2};
 
@@ -51,6 +54,10 @@ pub(crate) struct SupportRow<S: Scalar> {
     /// The pair touches (separation within the slop) at the substep's
     /// start: its ends take the contact solver's blend θ = 1.
     pub(crate) touching: bool,
+    /// Index of the contact row (the substep's contact constraints).
+    pub(crate) contact: u32,
+    /// A held row's friction impulse (along `perp(n)`).
+    pub(crate) tangent: S,
 }
 
 /// The support rows of a substep and what they pushed.
@@ -62,6 +69,10 @@ pub(crate) struct SupportScratch<S: Scalar> {
     pub(crate) pushed: Vec<Vec2<S>>,
     /// Per slot: reached from a spring-moved body through contacts.
     pub(crate) reached: Vec<bool>,
+    /// Each slot's summed pushes of the held rows: kept when the others
+    /// are taken back (a stiff group's contacts are final, see
+    /// [`crate::constraints`], "Springs and contacts").
+    pub(crate) kept: Vec<Vec2<S>>,
     /// Per slot: an end of a support row (its blend is θ = 1).
     pub(crate) contacted: Vec<bool>,
     /// The search's buffers (kept to step without allocating): each
@@ -102,11 +113,27 @@ impl<S: Scalar> SupportScratch<S> {
         largest
     }
 
-    /// Takes every support push back out of the position velocities, bit
-    /// for bit (the same sums were added).
+    /// Takes every support push but the held rows' back out of the
+    /// position velocities, bit for bit (the same sums were added; sums of
+    /// fixed-point values are exact).
     pub(crate) fn take_back(&self, position_velocities: &mut [Vec2<S>]) {
-        for (p, pushed) in position_velocities.iter_mut().zip(&self.pushed) {
-            *p -= *pushed;
+        for ((p, pushed), kept) in position_velocities
+            .iter_mut()
+            .zip(&self.pushed)
+            .zip(&self.kept)
+        {
+            *p -= *pushed - *kept;
         }
+    }
+
+    /// Clears every row's impulse and every push.
+    pub(crate) fn clear_impulses(&mut self) {
+        for row in self.rows.iter_mut() {
+            row.impulse = S::ZERO;
+            row.tangent = S::ZERO;
+            row.held = false;
+        }
+        self.pushed.iter_mut().for_each(|p| *p = Vec2::ZERO);
+        self.kept.iter_mut().for_each(|p| *p = Vec2::ZERO);
     }
 }

@@ -157,6 +157,7 @@ impl<S: Scalar> World<S> {
         context.spring_dv.clear();
         context.spring_dv.resize(n + 1, Vec2::ZERO);
         if !any {
+            scratch.supports.rows.clear();
             self.step_context.springs = scratch;
             return;
         }
@@ -204,13 +205,7 @@ impl<S: Scalar> World<S> {
             scratch
                 .position_velocities
                 .extend_from_slice(&context.velocities);
-            for row in scratch.supports.rows.iter_mut() {
-                row.impulse = S::ZERO;
-                row.held = false;
-            }
-            for pushed in scratch.supports.pushed.iter_mut() {
-                *pushed = Vec2::ZERO;
-            }
+            scratch.supports.clear_impulses();
             for geometry in scratch.radial.iter_mut() {
                 geometry.applied = Vec2::ZERO;
             }
@@ -242,7 +237,38 @@ impl<S: Scalar> World<S> {
             context.velocities[i] = v;
             context.spring_dv[i] = v - p;
         }
+        // The contacts solved with a stiff group (held rows) are final:
+        // their impulses are in the velocities (the support rows' pushes
+        // kept), and the contact solve, which would answer with the mass of
+        // the struck body alone, leaves them: each such row asks no more
+        // than the relative normal velocity it has now, and starts from
+        // no impulse (its impulses are added back after the velocity
+        // solve, for the contact cache, the bounces and the events).
+        for row in scratch.supports.rows.iter().filter(|row| row.held) {
+            let Some(c) = context.constraints.get_mut(row.contact as usize) else {
+                continue;
+            };
+            let (va, vb) = (
+                context.velocities[c.a as usize],
+                context.velocities[c.b as usize],
+            );
+            c.target_velocity = c.target_velocity.min((vb - va).dot(c.normal));
+            c.normal_impulse = S::ZERO;
+            c.tangent_impulse = S::ZERO;
+        }
         context.springs = scratch;
+    }
+
+    /// Adds the held contact rows' impulses (solved with their stiff group
+    /// in [`World::apply_springs`]) to what the contact solve gave them.
+    pub(crate) fn add_held_contact_impulses(&mut self) {
+        let context = &mut self.step_context;
+        for row in context.springs.supports.rows.iter().filter(|row| row.held) {
+            if let Some(c) = context.constraints.get_mut(row.contact as usize) {
+                c.normal_impulse = c.normal_impulse.add(row.impulse);
+                c.tangent_impulse = c.tangent_impulse.add(row.tangent);
+            }
+        }
     }
 
     /// The substep's contact rows that reach a spring-moved body through
@@ -255,6 +281,8 @@ impl<S: Scalar> World<S> {
         supports.rows.clear();
         supports.pushed.clear();
         supports.pushed.resize(slots, Vec2::ZERO);
+        supports.kept.clear();
+        supports.kept.resize(slots, Vec2::ZERO);
         supports.reached.clear();
         supports.reached.resize(slots, false);
         let contacts = &context.constraints;
@@ -325,7 +353,12 @@ impl<S: Scalar> World<S> {
             }
         }
         // In contact-row order (deterministic, whatever the search order).
-        for (c, _) in contacts.iter().zip(taken.iter()).filter(|(_, t)| **t) {
+        for (index, (c, _)) in contacts
+            .iter()
+            .zip(taken.iter())
+            .enumerate()
+            .filter(|(_, (_, t))| **t)
+        {
             rows.push(SupportRow {
                 a: c.a,
                 b: c.b,
@@ -337,6 +370,8 @@ impl<S: Scalar> World<S> {
                 held: false,
                 friction: c.friction,
                 touching: c.separation <= slop,
+                contact: index as u32,
+                tangent: S::ZERO,
             });
         }
     }

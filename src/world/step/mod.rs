@@ -12,7 +12,7 @@
 //! | broad phase (proxies, candidate pairs) | [`broad_phase`] |
 //! | narrow phase (pairs → contact rows, waking sleepers) | [`narrow_phase`] |
 //! | rope rows | [`constraints`] |
-//! | grouping, warm start, velocity iterations | [`solve`] |
+//! | grouping, warm start, velocity iterations (contacts solved with a stiff spring group left alone, their impulses added back after) | [`solve`], [`constraints`] |
 //! | integrate (bullets' time of impact; punched bodies stopped at immovable ones) | [`integrate`], [`punched_motion`] |
 //! | position iterations | [`solve`] |
 //! | bound corrections, out of immovable bodies (punched bodies again), bounces, rebound sweep, ropes settled | [`contacts`], [`punched_motion`] |
@@ -103,6 +103,7 @@ impl<S: Scalar> World<S> {
         self.build_rope_rows(h, inverse_h);
         self.group_and_warm_start(h);
         self.solve_velocities(h);
+        self.add_held_contact_impulses();
         self.integrate(h);
         self.remember_displacements();
         self.solve_positions(h);
