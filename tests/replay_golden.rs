@@ -31,11 +31,11 @@ const SEED: u64 = 2024;
 
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
-    ("stack", 0x7d009b781f2d0f38),
+    ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0xc38e0c9d6a324827),
-    ("balls", 0xeb75b7fff6c7bcb0),
+    ("balls", 0xa3eb9c0c644f4b4e),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0x65dae0f1c65828f9),
+    ("mixed", 0x000a79be3a93fee1),
 ];
 // END GOLDEN
 
