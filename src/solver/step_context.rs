@@ -104,6 +104,14 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) rebounds: Vec<Rebound<S>>,
     /// The broad-phase partners of each rebounding slot.
     pub(crate) rebound_partners: ReboundPartners,
+    /// A broad phase of its own for the rebounds that leave their proxies
+    /// (`world::step::rebound_escape`; its x order is of that query).
+    pub(crate) rebound_broad_phase: BroadPhase,
+    /// The pairs that query found (working memory).
+    pub(crate) escape_found: Vec<(u32, u32)>,
+    /// `(rebounding slot, other slot)` partners beyond the rebounding
+    /// body's proxy, sorted; none of them in `pairs`.
+    pub(crate) rebound_escape_pairs: Vec<(u32, u32)>,
     /// Working memory of the bounce solve.
     pub(crate) bounce: BounceScratch<S>,
     /// Displacements before the position pass (to bound its corrections).

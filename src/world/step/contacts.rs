@@ -311,7 +311,9 @@ impl<S: Scalar> World<S> {
     }
 
     /// Sweeps the motion each bounce added against the bouncing body's
-    /// broad-phase partners (at their end-of-substep positions), so a
+    /// broad-phase partners and, when the rebound leaves its proxy, the
+    /// bodies beyond it that it reaches ([`World::find_rebound_escapes`])
+    /// (at their end-of-substep positions), so a
     /// rebound cannot pass through what is behind it.
     ///
     /// A body that is not a bullet stops at the first thing its rebound
@@ -361,6 +363,8 @@ impl<S: Scalar> World<S> {
             context.velocities.len(),
             &mut context.rebound_partners,
         );
+        self.find_rebound_escapes();
+        let context = &mut self.step_context;
         for (k, rebound) in context.rebounds.iter().enumerate() {
             let (slot, before) = (rebound.slot, rebound.start);
             let Some(body) = self.slots[slot as usize].body.as_ref() else {
@@ -374,14 +378,27 @@ impl<S: Scalar> World<S> {
             };
             let mut time = rebound.time;
             let cap = if bullet { MAX_BULLET_IMPACTS - 1 } else { 1 };
-            let partners = context.rebound_partners.of(k);
+            // The broad-phase partners, then those beyond the proxy that
+            // the rebound reaches (`step/rebound_escape.rs`).
+            let beyond = {
+                let escapes = &context.rebound_escape_pairs;
+                let from = escapes.partition_point(|&(s, _)| s < slot);
+                let to = escapes.partition_point(|&(s, _)| s <= slot);
+                &escapes[from..to]
+            };
+            let partners = context
+                .rebound_partners
+                .of(k)
+                .iter()
+                .copied()
+                .chain(beyond.iter().map(|&(_, other)| other));
             let index = slot as usize;
             let mut at = body.position + before;
             let mut rest = context.displacements[index] - before;
             let mut velocity = context.velocities[index];
             for impact in 0..cap {
                 let mut earliest: Option<(S, Vec2<S>, u32)> = None;
-                for &other in partners {
+                for other in partners.clone() {
                     let Some(ob) = self.slots[other as usize].body.as_ref() else {
                         continue;
                     };

@@ -15,7 +15,7 @@
 //! | grouping, warm start, velocity iterations (contacts solved with a stiff spring group left alone, their impulses added back after) | [`solve`], [`constraints`] |
 //! | integrate (bullets' time of impact; punched bodies stopped at immovable ones) | [`integrate`], [`punched_motion`] |
 //! | position iterations | [`solve`] |
-//! | bound corrections, out of immovable bodies (punched bodies again), bounces, rebound sweep, ropes settled | [`contacts`], [`punched_motion`] |
+//! | bound corrections, out of immovable bodies (punched bodies again), bounces, rebound sweep (beyond the proxies too), ropes settled | [`contacts`], [`punched_motion`], [`rebound_escape`] |
 //! | write back (bounds: freeze) | [`integrate`] |
 //! | contact cache, rope impulses | [`contact_cache`], [`constraints`] |
 //! | per tick: sleep | [`sleep`] |
@@ -32,6 +32,7 @@ mod events;
 mod integrate;
 mod narrow_phase;
 mod punched_motion;
+mod rebound_escape;
 mod sleep;
 mod solve;
 mod velocities;
