@@ -105,11 +105,8 @@ pub(crate) fn confined_contact<S: Scalar>(
 #[allow(clippy::float_arithmetic)] // test inputs are built in f64
 mod tests {
     use super::*;
+    use crate::collision::test_values::v;
     use crate::math::Fx;
-
-    fn v(x: f64, y: f64) -> Vec2<Fx> {
-        Vec2::new(Fx::from_f64(x), Fx::from_f64(y))
-    }
 
     fn contact(n: Vec2<Fx>, s: f64) -> Contact<Fx> {
         Contact {

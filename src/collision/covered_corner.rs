@@ -80,15 +80,8 @@ pub(crate) fn covered_corner<S: Scalar>(
 #[allow(clippy::float_arithmetic)] // test inputs are built in f64
 mod tests {
     use super::*;
+    use crate::collision::test_values::{slop, v};
     use crate::math::Fx;
-
-    fn v(x: f64, y: f64) -> Vec2<Fx> {
-        Vec2::new(Fx::from_f64(x), Fx::from_f64(y))
-    }
-
-    fn slop() -> Fx {
-        Fx::from_f64(1e-4)
-    }
 
     /// Tiles of half width 1 with their tops at 0 (B) and `a_top` (A, to
     /// the left of the seam at x = 0); a circle r 0.25 at (dx, 0.25 + gap).

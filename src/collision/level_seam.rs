@@ -143,16 +143,9 @@ pub(crate) fn level_seam<S: Scalar>(
 mod tests {
     use super::*;
     use crate::collision::box_corner::box_contact;
+    use crate::collision::test_values::{slop, v};
     use crate::geometry::{Aabb, Circle, contact_circle_aabb};
     use crate::math::Fx;
-
-    fn v(x: f64, y: f64) -> Vec2<Fx> {
-        Vec2::new(Fx::from_f64(x), Fx::from_f64(y))
-    }
-
-    fn slop() -> Fx {
-        Fx::from_f64(1e-4)
-    }
 
     /// One substep of g = 10 from rest at 60 Hz.
     fn sag() -> Vec2<Fx> {

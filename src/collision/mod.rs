@@ -13,6 +13,8 @@ mod level_seam;
 mod narrow_phase;
 mod narrow_scratch;
 mod pair_sort;
+#[cfg(test)]
+mod test_values;
 
 pub(crate) use broad_phase::{BroadPhase, Proxy, ProxyClass};
 pub(crate) use contact_cache::CachedContact;

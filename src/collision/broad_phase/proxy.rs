@@ -1,7 +1,7 @@
 //! Proxies: what a body brings to the broad phase (its swept bounding box
 //! and how it takes part in pairing).
 
-use crate::math::Scalar;
+use crate::math::{Scalar, Vec2};
 
 /// How a proxy takes part in pairing.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,4 +77,26 @@ pub(crate) struct Proxy<S: Scalar> {
     pub(crate) max_y: S,
     pub(crate) index: u32,
     pub(crate) class: Option<ProxyClass>,
+}
+
+impl<S: Scalar> Proxy<S> {
+    /// Whether the box `lo..hi` lies inside this proxy: a body whose motion
+    /// stays inside its proxy was paired with everything it can reach.
+    pub(crate) fn covers(&self, lo: Vec2<S>, hi: Vec2<S>) -> bool {
+        lo.x >= self.min_x && lo.y >= self.min_y && hi.x <= self.max_x && hi.y <= self.max_y
+    }
+
+    /// This proxy grown over the box `lo..hi`, as the `Dynamic` proxy of a
+    /// body whose motion leaves it (a rebound, a punched body): a second
+    /// broad-phase query pairs it with what lies in the region it reaches.
+    pub(crate) fn escaping_over(&self, lo: Vec2<S>, hi: Vec2<S>) -> Self {
+        Self {
+            min_x: lo.x.min(self.min_x),
+            max_x: hi.x.max(self.max_x),
+            min_y: lo.y.min(self.min_y),
+            max_y: hi.y.max(self.max_y),
+            index: self.index,
+            class: Some(ProxyClass::Dynamic),
+        }
+    }
 }

@@ -42,7 +42,7 @@
 //! a crowd pushed a punched body 0.05, the correction's bound, into a wall
 //! it had just been stopped at).
 
-use crate::collision::{Proxy, ProxyClass, shape_toi};
+use crate::collision::{ProxyClass, shape_toi};
 use crate::geometry::Toi;
 use crate::math::Scalar;
 use crate::solver::StepContext;
@@ -124,22 +124,11 @@ impl<S: Scalar> World<S> {
                 .bounding_aabb_at(body.position + context.displacements[i]);
             let reach = now.union(&later).expanded(grow);
             let (lo, hi) = (reach.min(), reach.max());
-            if lo.x >= proxy.min_x
-                && lo.y >= proxy.min_y
-                && hi.x <= proxy.max_x
-                && hi.y <= proxy.max_y
-            {
+            if proxy.covers(lo, hi) {
                 continue;
             }
             any_escapes = true;
-            context.escape_proxies.push(Proxy {
-                min_x: lo.x.min(proxy.min_x),
-                max_x: hi.x.max(proxy.max_x),
-                min_y: lo.y.min(proxy.min_y),
-                max_y: hi.y.max(proxy.max_y),
-                index: proxy.index,
-                class: Some(ProxyClass::Dynamic),
-            });
+            context.escape_proxies.push(proxy.escaping_over(lo, hi));
         }
         if any_escapes {
             context

@@ -55,11 +55,7 @@ impl<S: Scalar> World<S> {
                     );
                     let path = start.union(&end);
                     let (lo, hi) = (path.min(), path.max());
-                    let inside = lo.x >= proxy.min_x
-                        && lo.y >= proxy.min_y
-                        && hi.x <= proxy.max_x
-                        && hi.y <= proxy.max_y;
-                    (!inside).then_some((lo, hi))
+                    (!proxy.covers(lo, hi)).then_some((lo, hi))
                 }
                 _ => None,
             };
@@ -69,14 +65,7 @@ impl<S: Scalar> World<S> {
             context.escape_proxies.push(match path {
                 Some((lo, hi)) => {
                     any = true;
-                    Proxy {
-                        min_x: lo.x.min(proxy.min_x),
-                        max_x: hi.x.max(proxy.max_x),
-                        min_y: lo.y.min(proxy.min_y),
-                        max_y: hi.y.max(proxy.max_y),
-                        index: proxy.index,
-                        class: Some(ProxyClass::Dynamic),
-                    }
+                    proxy.escaping_over(lo, hi)
                 }
                 None => Proxy {
                     class: Some(ProxyClass::Still),
