@@ -19,12 +19,33 @@
 //! anything it meets). The pairs found there and not among the substep's
 //! pairs are the body's extra partners for the sweep. No rebound leaves its
 //! proxy in most substeps (a fast body's proxy covers its speed in every
-//! direction, `step/broad_phase.rs`), and then nothing is queried.
+//! direction, `step/broad_phase.rs`): the rebounds are checked first, and
+//! only when one escapes is the proxy list copied and queried.
 
 use crate::collision::{Proxy, ProxyClass};
-use crate::math::Scalar;
+use crate::math::{Scalar, Vec2};
 use crate::solver::StepContext;
-use crate::world::World;
+use crate::solver::restitution::Rebound;
+use crate::world::{Slot, World};
+
+/// The corners `(min, max)` of a rebounding body's path (its box where the
+/// rebound starts ∪ its box where it ends) when that path leaves the
+/// body's proxy; `None` when the proxy covers it (or the body is gone).
+fn path_beyond_proxy<S: Scalar>(
+    slots: &[Slot<S>],
+    displacements: &[Vec2<S>],
+    proxy: &Proxy<S>,
+    rebound: &Rebound<S>,
+) -> Option<(Vec2<S>, Vec2<S>)> {
+    let body = slots[proxy.index as usize].body.as_ref()?;
+    let start = body.shape.bounding_aabb_at(body.position + rebound.start);
+    let end = body
+        .shape
+        .bounding_aabb_at(body.position + displacements[proxy.index as usize]);
+    let path = start.union(&end);
+    let (lo, hi) = (path.min(), path.max());
+    (!proxy.covers(lo, hi)).then_some((lo, hi))
+}
 
 impl<S: Scalar> World<S> {
     /// Fills `rebound_escape_pairs` with `(rebounding slot, other slot)`
@@ -35,7 +56,23 @@ impl<S: Scalar> World<S> {
         let context = &mut self.step_context;
         context.rebound_escape_pairs.clear();
         context.escape_proxies.clear();
-        let mut any = false;
+        // `proxies` is in slot order, one per slot at most.
+        let proxy_of = |slot: u32| {
+            context
+                .proxies
+                .binary_search_by_key(&slot, |p| p.index)
+                .ok()
+                .map(|k| &context.proxies[k])
+                .filter(|proxy| proxy.class.is_some())
+        };
+        let any_escapes = context.rebounds.iter().any(|rebound| {
+            proxy_of(rebound.slot).is_some_and(|proxy| {
+                path_beyond_proxy(&self.slots, &context.displacements, proxy, rebound).is_some()
+            })
+        });
+        if !any_escapes {
+            return;
+        }
         let mut next = 0;
         for proxy in &context.proxies {
             if proxy.class.is_none() {
@@ -45,36 +82,23 @@ impl<S: Scalar> World<S> {
             while next < context.rebounds.len() && context.rebounds[next].slot < proxy.index {
                 next += 1;
             }
-            let rebound = context.rebounds.get(next).filter(|r| r.slot == proxy.index);
-            let body = self.slots[proxy.index as usize].body.as_ref();
-            let path = match (rebound, body) {
-                (Some(rebound), Some(body)) => {
-                    let start = body.shape.bounding_aabb_at(body.position + rebound.start);
-                    let end = body.shape.bounding_aabb_at(
-                        body.position + context.displacements[proxy.index as usize],
-                    );
-                    let path = start.union(&end);
-                    let (lo, hi) = (path.min(), path.max());
-                    (!proxy.covers(lo, hi)).then_some((lo, hi))
-                }
-                _ => None,
-            };
+            let path = context
+                .rebounds
+                .get(next)
+                .filter(|r| r.slot == proxy.index)
+                .and_then(|rebound| {
+                    path_beyond_proxy(&self.slots, &context.displacements, proxy, rebound)
+                });
             // An escaping body is the only class that pairs here
             // (`Dynamic`); every other proxy is `Still`, which pairs with
             // it only.
             context.escape_proxies.push(match path {
-                Some((lo, hi)) => {
-                    any = true;
-                    proxy.escaping_over(lo, hi)
-                }
+                Some((lo, hi)) => proxy.escaping_over(lo, hi),
                 None => Proxy {
                     class: Some(ProxyClass::Still),
                     ..*proxy
                 },
             });
-        }
-        if !any {
-            return;
         }
         let StepContext {
             rebound_broad_phase,
