@@ -13,6 +13,7 @@ mod level_seam;
 mod narrow_phase;
 mod narrow_scratch;
 mod pair_sort;
+mod rope_turn;
 #[cfg(test)]
 mod test_values;
 

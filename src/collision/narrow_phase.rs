@@ -17,6 +17,7 @@ use super::deflected_sweep::{Side, deflected_impact, earlier_turn};
 use super::face_past_walls::face_past_walls;
 use super::implied_rows::implied_rows;
 use super::level_seam::level_seam;
+use super::rope_turn::{rope_turn, rope_turned_contact};
 use crate::dynamics::{Body, BodyKind};
 use crate::solver::restitution::BounceCandidate;
 use crate::solver::row::{ContactConstraint, effective_mass};
@@ -159,6 +160,9 @@ pub(crate) struct NarrowPhase<'a, S: Scalar> {
     pub(crate) velocities: &'a [Vec2<S>],
     /// Inverse mass of each slot as the solver sees it.
     pub(crate) inverse_masses: &'a [S],
+    /// Per slot, the turn of its velocity by stretched ropes (empty: none;
+    /// `collision::rope_turn`).
+    pub(crate) rope_turns: &'a [Vec2<S>],
     /// Last substep's contacts, sorted by `(a, b)`: the warm-start impulses.
     pub(crate) cache: &'a [CachedContact<S>],
     /// Gap within which a pair gets a (speculative) row.
@@ -204,6 +208,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
             pairs,
             velocities,
             inverse_masses,
+            rope_turns,
             cache,
             speculative_margin,
             linear_slop,
@@ -225,6 +230,7 @@ impl<S: Scalar> NarrowPhase<'_, S> {
         // fraction `t`).
         scratch.missed.clear();
         scratch.hits.clear();
+        scratch.straight_misses = 0;
         // Per slot: whether it meets anything this substep (`MEETS`), an
         // immovable body (`MEETS_IMMOVABLE`): only such a body can be
         // turned (`collision::deflected_sweep`).
@@ -362,10 +368,25 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                     // into the other by something it meets first: decided
                     // after the loop, when every meeting row is known
                     // (`collision::deflected_sweep`).
-                    Toi::Miss => {
-                        scratch.missed.push((a, b));
-                        continue;
-                    }
+                    // A body a stretched rope turns may meet the other after
+                    // all (`collision::rope_turn`): the row is aimed at the
+                    // turned motion's impact.
+                    Toi::Miss => match rope_turned_contact(
+                        (&body_a.shape, body_a.position, va),
+                        (&body_b.shape, body_b.position, vb),
+                        (rope_turn(rope_turns, a), rope_turn(rope_turns, b)),
+                        h,
+                    ) {
+                        Some(turned) => {
+                            vn = (vb - va).dot(turned.normal);
+                            contact = turned;
+                        }
+                        None => {
+                            scratch.straight_misses += 1;
+                            scratch.missed.push((a, b));
+                            continue;
+                        }
+                    },
                     Toi::Hit { t, normal }
                         if is_box_pair
                             && corner_impact(

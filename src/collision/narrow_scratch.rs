@@ -18,6 +18,10 @@ pub(crate) struct NarrowScratch<S: Scalar> {
     pub(crate) flags: Vec<u8>,
     /// Pairs whose straight sweep missed.
     pub(crate) missed: Vec<(u32, u32)>,
+    /// How many pairs' straight sweeps (and rope-turned sweeps) missed in
+    /// the last run: the ropes' turns are looked at only when some did
+    /// (`world::step::narrow_phase`).
+    pub(crate) straight_misses: usize,
     /// Rows whose straight sweep hit, with the fraction.
     pub(crate) hits: Vec<(usize, S)>,
     /// Who meets whom.

@@ -56,6 +56,10 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) spring_dv: Vec<Vec2<S>>,
     /// The spring rows and their solve's buffers.
     pub(crate) springs: SpringScratch<S>,
+    /// Per slot, the velocity change the ropes its straight motion would
+    /// stretch give it this substep (`world::step::rope_turns`); empty when
+    /// no rope is stretched.
+    pub(crate) rope_turns: Vec<Vec2<S>>,
     /// Active rope rows, solved in the same loop as the contacts.
     pub(crate) rope_rows: Vec<ContactConstraint<S>>,
     /// The constraint slot of each rope row.

@@ -15,11 +15,11 @@ use crate::world::World;
 /// Where an anchor is this substep, how it moves, and which solver slot
 /// carries its velocity.
 #[derive(Clone, Copy)]
-struct AnchorState<S: Scalar> {
-    position: Vec2<S>,
-    velocity: Vec2<S>,
-    inverse_mass: S,
-    slot: u32,
+pub(super) struct AnchorState<S: Scalar> {
+    pub(super) position: Vec2<S>,
+    pub(super) velocity: Vec2<S>,
+    pub(super) inverse_mass: S,
+    pub(super) slot: u32,
 }
 
 impl<S: Scalar> World<S> {
@@ -28,7 +28,7 @@ impl<S: Scalar> World<S> {
         u32::try_from(self.slots.len()).unwrap_or(u32::MAX)
     }
 
-    fn anchor_state(&self, anchor: &Anchor<S>) -> Option<AnchorState<S>> {
+    pub(super) fn anchor_state(&self, anchor: &Anchor<S>) -> Option<AnchorState<S>> {
         match *anchor {
             Anchor::Point(p) => Some(AnchorState {
                 position: p,

@@ -10,7 +10,7 @@
 //! | per substep: forces → velocities (gravity) | [`velocities`] |
 //! | springs | [`constraints`] |
 //! | broad phase (proxies, candidate pairs) | [`broad_phase`] |
-//! | narrow phase (pairs → contact rows, waking sleepers) | [`narrow_phase`] |
+//! | narrow phase (pairs → contact rows, waking sleepers; run again with the ropes' turns of the bodies' paths when a straight sweep missed) | [`narrow_phase`], [`rope_turns`] |
 //! | rope rows | [`constraints`] |
 //! | grouping, warm start, velocity iterations (contacts solved with a stiff spring group left alone, their impulses added back after) | [`solve`], [`constraints`] |
 //! | integrate (bullets' time of impact; punched bodies stopped at immovable ones) | [`integrate`], [`punched_motion`] |
@@ -33,6 +33,7 @@ mod integrate;
 mod narrow_phase;
 mod punched_motion;
 mod rebound_escape;
+mod rope_turns;
 mod sleep;
 mod solve;
 mod velocities;
