@@ -138,14 +138,26 @@ fn outline_radius(peg: Peg, sizes: Sizes) -> f64 {
 /// A chain of `links` links laid flat just above a fixed `peg` centred at
 /// `centre`, the chain's middle `offset` (a fraction of its half length)
 /// to the left of the peg; its two end links `ratio` times a link.
-fn drape(
+#[derive(Clone, Copy, Debug)]
+struct Draping {
     links: usize,
     peg: Peg,
     sizes: Sizes,
     offset: f64,
     ratio: f64,
     centre: (f64, f64),
-) -> Drape {
+}
+
+/// Runs a draping, tick by tick.
+fn drape(draping: Draping) -> Drape {
+    let Draping {
+        links,
+        peg,
+        sizes,
+        offset,
+        ratio,
+        centre,
+    } = draping;
     let Sizes {
         peg: half,
         link_radius,
@@ -208,27 +220,27 @@ fn drape(
 }
 
 fn check_drape(links: usize, peg: Peg, offset: f64, ratio: f64, centre: (f64, f64)) {
-    let failures = drape_failures(links, peg, SIZES, offset, ratio, centre);
+    let failures = drape_failures(Draping {
+        links,
+        peg,
+        sizes: SIZES,
+        offset,
+        ratio,
+        centre,
+    });
     assert!(failures.is_empty(), "{failures:?}");
 }
 
 /// Runs a draping, prints its figures and returns what broke its bounds.
-fn drape_failures(
-    links: usize,
-    peg: Peg,
-    sizes: Sizes,
-    offset: f64,
-    ratio: f64,
-    centre: (f64, f64),
-) -> Vec<String> {
-    let d = drape(links, peg, sizes, offset, ratio, centre);
+fn drape_failures(draping: Draping) -> Vec<String> {
+    let d = drape(draping);
+    let case = format!("{draping:?}");
     println!(
-        "{links} links over a {peg:?} peg at {centre:?}, {sizes:?}, offset {offset}, ends x{ratio}: worst stretch {:.4} % (bound {:.1} %), deepest in the peg beyond the unseen slide {:.3e} (bound {DEPTH:.3e})",
+        "{case}: worst stretch {:.4} % (bound {:.1} %), deepest in the peg beyond the unseen slide {:.3e} (bound {DEPTH:.3e})",
         100.0 * d.stretch,
         100.0 * STRETCH,
         d.depth
     );
-    let case = format!("{links} links, {peg:?}, {sizes:?}, offset {offset}, x{ratio}");
     let mut failures = Vec::new();
     if d.stretch > STRETCH {
         failures.push(format!("{case}: stretch {}", d.stretch));
@@ -269,7 +281,14 @@ fn links_sliding_round_pegs_never_sink_into_them() {
                         link_radius,
                         segment,
                     };
-                    failures.extend(drape_failures(20, peg, sizes, offset, ratio, (0.0, 0.0)));
+                    failures.extend(drape_failures(Draping {
+                        links: 20,
+                        peg,
+                        sizes,
+                        offset,
+                        ratio,
+                        centre: (0.0, 0.0),
+                    }));
                 }
             }
         }
