@@ -31,6 +31,12 @@ pub(crate) struct StepContext<S: Scalar> {
     /// the contact solve), for [`crate::world`]'s cut of motion the solve
     /// sent beyond where contacts were looked for.
     pub(crate) predicted_velocities: Vec<Vec2<S>>,
+    /// Velocity of each slot before the warm start, kept when a contact
+    /// group is solved on covering trees (`world::step::energy_guard`);
+    /// empty otherwise.
+    pub(crate) velocities_before_solve: Vec<Vec2<S>>,
+    /// Per slot: the last group the energy guard counted it in.
+    pub(crate) energy_marks: Vec<u32>,
     /// Slots (ascending) whose solved motion left their predicted motion
     /// by more than the margin allows (working memory of that cut).
     pub(crate) punched: Vec<u32>,

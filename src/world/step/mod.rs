@@ -12,7 +12,7 @@
 //! | broad phase (proxies, candidate pairs) | [`broad_phase`] |
 //! | narrow phase (pairs → contact rows, waking sleepers; run again with the ropes' turns of the bodies' paths when a straight sweep missed) | [`narrow_phase`], [`rope_turns`] |
 //! | rope rows | [`constraints`] |
-//! | grouping, warm start, velocity iterations (contacts solved with a stiff spring group left alone, their impulses added back after) | [`solve`], [`constraints`] |
+//! | grouping, warm start, velocity iterations (contacts solved with a stiff spring group left alone, their impulses added back after; covering-tree groups that run away solved again by sequential impulses) | [`solve`], [`constraints`], [`energy_guard`] |
 //! | integrate (bullets' time of impact; punched bodies stopped at immovable ones) | [`integrate`], [`punched_motion`] |
 //! | position iterations | [`solve`] |
 //! | bound corrections, out of immovable bodies (punched bodies again), bounces, rebound sweep (beyond the proxies too), ropes settled | [`contacts`], [`punched_motion`], [`rebound_escape`] |
@@ -28,6 +28,7 @@ mod broad_phase;
 mod constraints;
 mod contact_cache;
 pub(crate) mod contacts;
+mod energy_guard;
 mod events;
 mod integrate;
 mod narrow_phase;

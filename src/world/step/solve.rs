@@ -68,6 +68,8 @@ impl<S: Scalar> World<S> {
         }
         let row_count = context.joint_rows.len().max(context.constraints.len());
         context.tree.reserve(slot_count, row_count);
+        self.remember_velocities_before_solve();
+        let context = &mut self.step_context;
         warm_start(&context.rope_rows, &mut context.velocities);
         warm_start(&context.constraints, &mut context.velocities);
     }
@@ -115,6 +117,7 @@ impl<S: Scalar> World<S> {
                     tree,
                 );
             }
+            self.guard_covering_tree_energy();
             return;
         }
         let ropes = context.rope_rows.len();
