@@ -36,8 +36,8 @@ pub const GOLDEN: &[GoldenScenario] = &[
             (360, 0x758213cf9c770bf2, 0xce71d7c1b2940351),
             (420, 0x0f548ec7dc413bc5, 0x0336b3fb6ca57621),
             (480, 0x7f216b5e61102bad, 0xec7d7c3e46346e59),
-            (540, 0x42d87cac8786f9cd, 0x5fae46b2f4d89823),
-            (600, 0xfe7997b20a7d34c5, 0x2db18a0369571f33),
+            (540, 0xa43ccdf3df7de8f2, 0x17b7464018e97634),
+            (600, 0xca2b51f4c2a4a3ea, 0x26dc42badee3097c),
         ],
     },
     GoldenScenario {
@@ -116,8 +116,8 @@ pub const GOLDEN: &[GoldenScenario] = &[
             (360, 0x8a29c47ef8662a68, 0xe0dd58411f0e23c7),
             (420, 0x4265ce599c2f857f, 0x96e889637e62333d),
             (480, 0x065fb937f2f0591d, 0x37d437990a2e0876),
-            (540, 0x1879ce38c6fac5d0, 0x3b4a9dbb1bdd9f03),
-            (600, 0x5afef3d763f2c724, 0x6d30c5dfe68eee70),
+            (540, 0x49ef1059d851bde5, 0x3b4a9dbb1bdd9f03),
+            (600, 0xdc3c1dc00bfd4dd7, 0x6d30c5dfe68eee70),
         ],
     },
     GoldenScenario {

@@ -35,8 +35,10 @@
 //! [`crate::solver::row_groups`] leaves the marked ones off the spanning
 //! tree and out of the group's cycles, and a group that is a tree without
 //! them takes the exact tree solve, the marked rows after it by sequential
-//! impulses (which then find nothing to do). A group solved by sequential
-//! impulses (a moving crowd of even masses) or with cycles of its own keeps
+//! impulses (which then find nothing to do). A cyclic group solved on
+//! spanning trees leaves them out of every tree as well (one kept in let
+//! the exact solve drop a row implying it as dependent). A group solved by
+//! sequential impulses alone (a moving crowd of even masses) keeps
 //! them as any other row: there the implying rows are only nearly solved
 //! after the sweeps, and the implied row is the direct guard of `A`
 //! against `C` (a box of a crowd against a wall, the projection out of

@@ -26,7 +26,11 @@
 //!
 //! # How many trees
 //!
-//! Rows to fixed bodies never close a cycle and are in every tree. The
+//! Rows to fixed bodies never close a cycle and are in every tree, except
+//! rows implied by two others through a movable body
+//! ([`crate::collision`]'s implied rows), which are in none: one kept
+//! made a row implying it dependent in the exact solve, which then left it
+//! out (a box of a thin column sank wholly into the box below). The
 //! first tree is the one [`crate::solver::row_groups::RowGroups::regroup`]
 //! picked along the load paths; each next one is Kruskal's rule over the
 //! rows not yet covered first, then the covered ones (loaded first). A
@@ -101,13 +105,15 @@ impl ForestCover {
     /// ground, which is how the load goes: 2.4e-6 in that step. Supports
     /// along gravity (a brick on two bricks) push nothing apart and are all
     /// taken in 1. Rows to bodies of infinite mass are in every tree; one
-    /// that holds its body up counts as its first support.
+    /// that holds its body up counts as its first support. Rows marked in
+    /// `implied` (per row; empty: none) are in no tree (module notes).
     pub(crate) fn first_tree<S: Scalar>(
         &mut self,
         rows: &[ContactConstraint<S>],
         group: &[usize],
         tiers: &[u8],
         rises: &[u8],
+        implied: &[bool],
     ) {
         if self.supported.len() < self.parents.len() {
             self.supported.resize(self.parents.len(), false);
@@ -123,7 +129,15 @@ impl ForestCover {
                 row.inverse_mass_a.is_positive().then_some(row.a)
             }
         };
+        let implied = |ri: usize| implied.get(ri).copied().unwrap_or(false);
         for &ri in group {
+            if implied(ri) {
+                // Implied by rows of the group: in no tree (left to the
+                // sequential update after the exact solves).
+                self.off[ri] = true;
+                self.uncovered[ri] = false;
+                continue;
+            }
             if tiers[ri] == NO_TIER {
                 self.off[ri] = false;
                 if let Some(body) = upper(ri) {
@@ -134,6 +148,7 @@ impl ForestCover {
         // Passes: 0 loaded supports, 1 touching supports, 2 loaded side
         // rows, 3 touching side rows, 4 second oblique supports, 5 apart.
         let pass_of = |ri: usize| match (tiers[ri], rises[ri] & ACROSS != 0) {
+            _ if implied(ri) => None,
             (NO_TIER, _) => None,
             (0, false) => Some(0),
             (0, true) => Some(2),
@@ -184,19 +199,25 @@ impl ForestCover {
         }
     }
 
-    /// Whether some row of `group` is in no tree yet.
-    pub(crate) fn any_uncovered(&self, group: &[usize]) -> bool {
-        group.iter().any(|&ri| self.uncovered[ri])
+    /// Whether some row of `group` is in no tree yet, the rows marked in
+    /// `implied` aside (they are in none, by design).
+    pub(crate) fn any_uncovered(&self, group: &[usize], implied: &[bool]) -> bool {
+        group
+            .iter()
+            .any(|&ri| self.uncovered[ri] && !implied.get(ri).copied().unwrap_or(false))
     }
 
     /// Picks the next spanning tree of `group` (its rows off it marked in
     /// [`off`](Self::off)), taking the uncovered rows first, and marks the
-    /// rows it covers; returns how many rows it newly covers.
+    /// rows it covers; returns how many rows it newly covers. Rows marked
+    /// in `implied` stay off it and uncovered.
     pub(crate) fn next_tree<S: Scalar>(
         &mut self,
         rows: &[ContactConstraint<S>],
         group: &[usize],
+        implied: &[bool],
     ) -> usize {
+        let implied = |ri: usize| implied.get(ri).copied().unwrap_or(false);
         // Tiers: 0 uncovered, 1 covered and loaded, 2 the rest.
         let tier = |ri: usize, uncovered: &[bool]| {
             if uncovered[ri] {
@@ -213,6 +234,10 @@ impl ForestCover {
                     continue;
                 }
                 let row = &rows[ri];
+                if implied(ri) {
+                    self.off[ri] = true;
+                    continue;
+                }
                 if !(row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive()) {
                     // A row to a fixed body closes no cycle.
                     self.off[ri] = false;

@@ -64,7 +64,8 @@ pub(crate) struct RowGroups {
     cyclic: Vec<bool>,
     /// Per group: [`TOUCHING_EDGE`] if a row touching or carrying impulse
     /// is on its spanning tree, [`GROUNDED`] if a row touches a body of
-    /// infinite mass (what makes a resting structure, with [`resting`]).
+    /// infinite mass (what makes a resting structure, with
+    /// [`resting_or_struck`]).
     support: Vec<u8>,
     /// Per row: whether it closed a cycle when the spanning trees were
     /// picked ([`regroup`](Self::regroup)); such rows are left out of the
@@ -75,6 +76,10 @@ pub(crate) struct RowGroups {
     /// Per row: how its normal lies against gravity ([`rise`]), which the
     /// covering's first tree reads ([`ForestCover::first_tree`]).
     row_rise: Vec<u8>,
+    /// Per row: implied by two other rows of its group
+    /// ([`regroup`](Self::regroup)'s `implied`; false for ropes). Such
+    /// rows are in no spanning tree.
+    row_implied: Vec<bool>,
 }
 
 impl RowGroups {
@@ -106,11 +111,13 @@ impl RowGroups {
     /// a movable body between ([`crate::collision`]'s implied rows). They
     /// are taken last and close no cycle that counts: a stack of thin
     /// boxes hit by a fast ball, whose rows reach through the boxes to
-    /// every box below and to the ground, is still a tree. In a group that
-    /// is a tree without them they are off it (the rows with a body of
-    /// infinite mass too), so its exact solve leaves them to the
-    /// sequential update after it, which finds them satisfied; in a group
-    /// with cycles of its own they are rows as any other.
+    /// every box below and to the ground, is still a tree. They are off
+    /// every spanning tree (the rows with a body of infinite mass too,
+    /// and in the trees covering a cyclic group,
+    /// [`crate::solver::forest_cover`]), so an exact solve leaves them to
+    /// the sequential update after it, which finds them satisfied; a
+    /// group solved by sequential impulses alone solves them as any other
+    /// row.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn regroup<S: Scalar>(
         &mut self,
@@ -132,6 +139,10 @@ impl RowGroups {
         let is_implied =
             |ri: usize| ri >= ropes && implied.get(ri - ropes).copied().unwrap_or(false);
         let any_implied = implied.iter().any(|&m| m);
+        self.row_implied.clear();
+        if any_implied {
+            self.row_implied.extend((0..rows.len()).map(&is_implied));
+        }
         islands::reset(parents, slot_count);
         self.root_flags.clear();
         self.root_flags.resize(slot_count, 0);
@@ -254,11 +265,14 @@ impl RowGroups {
             }
         }
         // The implied rows with a body of infinite mass leave the spanning
-        // tree of a group that is a tree without them (the others are off
-        // it already).
+        // tree too (the others are off it already): in a cyclic group as
+        // well, where one that the exact solve took in (a box's row to the
+        // ground through the box below it) made the row of the box below
+        // dependent, which the solve then left out, so that the box could
+        // sink by the implied row's gap into the box below.
         if any_implied {
-            for (ri, (&t, &g)) in self.row_tier.iter().zip(&self.row_group).enumerate() {
-                if t == NO_TIER && is_implied(ri) && !self.cyclic[g as usize] {
+            for (ri, &t) in self.row_tier.iter().enumerate() {
+                if t == NO_TIER && is_implied(ri) {
                     self.off_tree[ri] = true;
                 }
             }
@@ -340,11 +354,14 @@ impl RowGroups {
     /// * A cyclic group of even masses that rests (a pyramid, a brick wall,
     ///   a wall of equal boxes: its touching rows join it, it touches a
     ///   body of infinite mass, and no two of its bodies approach or part
-    ///   faster than one substep of gravity, [`resting`]) and has at most
+    ///   faster than one substep of gravity, [`resting_or_struck`]), or
+    ///   rests but for one body striking it (two columns of thin boxes
+    ///   side by side, a ball arriving on one of them), and has at most
     ///   [`CYCLIC_TREE_ROWS`] rows: the same spanning-tree solve. Sequential
     ///   impulses left a 10-row pyramid of equal boxes 0.0037 low (bound
     ///   10·slop = 0.001) and pass a load down `n` rows only in `O(n²)`
-    ///   sweeps.
+    ///   sweeps: a ball at 50 units/s pushed boxes of such a column wholly
+    ///   into the ones below.
     /// * The rest (cyclic groups of even masses in motion, such as a ball
     ///   pit being filled, or larger than [`CYCLIC_TREE_ROWS`]) take
     ///   sequential impulses, whose cost stays linear. The spanning-tree
@@ -407,7 +424,7 @@ impl RowGroups {
                     && !direct
                     && supported
                     && group.len() <= CYCLIC_TREE_ROWS
-                    && resting(rows, group, velocities, rest_speed);
+                    && resting_or_struck(rows, group, velocities, rest_speed, &self.row_tier);
                 // Contacts only: rope loops keep their one spanning tree
                 // (the rope solves carry sideways rows the covering was
                 // not measured with).
@@ -485,8 +502,13 @@ impl RowGroups {
     ) -> GroupSolve {
         let first = self.trees.len();
         let start = self.plans.len();
-        self.cover
-            .first_tree(rows, group, &self.row_tier, &self.row_rise);
+        self.cover.first_tree(
+            rows,
+            group,
+            &self.row_tier,
+            &self.row_rise,
+            &self.row_implied,
+        );
         if !plan_tree(
             rows,
             group,
@@ -499,8 +521,10 @@ impl RowGroups {
         }
         self.trees.push(start..self.plans.len());
         self.cover.start(group);
-        while self.trees.len() - first < MAX_TREES && self.cover.any_uncovered(group) {
-            if self.cover.next_tree(rows, group) == 0 {
+        while self.trees.len() - first < MAX_TREES
+            && self.cover.any_uncovered(group, &self.row_implied)
+        {
+            if self.cover.next_tree(rows, group, &self.row_implied) == 0 {
                 break;
             }
             let start = self.plans.len();
@@ -617,28 +641,66 @@ fn cyclic(flags: u8) -> bool {
     flags & TOUCHING_CYCLE != 0 || flags & (APART_CYCLE | APART_EDGE) == APART_CYCLE | APART_EDGE
 }
 
-/// Whether a group rests: no two of its dynamic bodies approach or part
-/// along a row faster than `rest_speed` (one substep of gravity, `|g|·h`:
-/// bodies resting on each other share the velocity gravity gave them),
-/// and every such row is along an axis (faces of boxes). With oblique rows
-/// (a pile of circles) the alternation of the exact tree solve and the
-/// rows off the tree did not settle: a 500-circle pile in a closed box
-/// never slept in 10 s (it sleeps on sequential impulses).
-fn resting<S: Scalar>(
+/// Whether a group rests, or rests but for one body striking it: the
+/// spanning-tree solve of an even-mass cyclic group ([`RowGroups::classify`]).
+///
+/// *Resting*: no two of its dynamic bodies approach or part along a row
+/// faster than `rest_speed` (one substep of gravity, `|g|·h`: bodies
+/// resting on each other share the velocity gravity gave them), and every
+/// such row touching or carrying impulse (`tiers`: not [`APART_TIER`]) is
+/// along an axis (faces of boxes). With oblique rows touching (a pile of
+/// circles) the alternation of the exact tree solve and the rows off the
+/// tree did not settle: a 500-circle pile in a closed box never slept in
+/// 10 s (it sleeps on sequential impulses). A slow row apart carries
+/// nothing and may lie at any angle (a ball resting on a seam sees the
+/// boxes below through the seam at a slant).
+///
+/// *Struck*: the rows faster than `rest_speed` all hold one body (the
+/// striker; its rows may lie at any angle), and the others are as above.
+/// Two columns of thin boxes side by side, a ball arriving at 50–1000
+/// units/s on one of them or on the seam (issue 13): the rows between the
+/// columns close cycles, and sequential impulses, which carry an impact
+/// down a chain of `n` rows only in `O(n²)` sweeps, left boxes wholly
+/// inside the ones below (0.02 deep) and up to 16 units through the
+/// ground. The exact solve stops the ball on the column as on the ground.
+/// Groups struck by several bodies at once (a pile being filled, the
+/// 5 000-ball pit) keep sequential impulses, whose cost stays linear.
+fn resting_or_struck<S: Scalar>(
     rows: &[ContactConstraint<S>],
     group: &[usize],
     velocities: &[Vec2<S>],
     rest_speed: S,
+    tiers: &[u8],
 ) -> bool {
-    group.iter().all(|&ri| {
+    // The striker's candidates: the ends of the first fast row, narrowed
+    // by each fast row after it.
+    let mut striker: Option<[Option<u32>; 2]> = None;
+    for &ri in group {
         let row = &rows[ri];
-        !(row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive())
-            || ((row.normal.x == S::ZERO || row.normal.y == S::ZERO)
-                && (velocities[row.b as usize] - velocities[row.a as usize])
-                    .dot(row.normal)
-                    .abs()
-                    <= rest_speed)
-    })
+        if !(row.inverse_mass_a.is_positive() && row.inverse_mass_b.is_positive()) {
+            continue;
+        }
+        let speed = (velocities[row.b as usize] - velocities[row.a as usize])
+            .dot(row.normal)
+            .abs();
+        if speed <= rest_speed {
+            let axis = row.normal.x == S::ZERO || row.normal.y == S::ZERO;
+            if !axis && tiers[ri] != APART_TIER {
+                return false;
+            }
+            continue;
+        }
+        let ends = [Some(row.a), Some(row.b)];
+        let kept = match striker {
+            None => ends,
+            Some(candidates) => candidates.map(|c| c.filter(|slot| ends.contains(&Some(*slot)))),
+        };
+        if kept == [None, None] {
+            return false;
+        }
+        striker = Some(kept);
+    }
+    true
 }
 
 /// Whether the dynamic bodies of a group differ in inverse mass by 4× or
