@@ -53,6 +53,15 @@ pub(crate) struct StepContext<S: Scalar> {
     /// `(punched body, immovable body)` pairs without a contact row: what
     /// the punched bodies are stopped at (working memory of that cut).
     pub(crate) punched_obstacles: Vec<(u32, u32)>,
+    /// The displacements before the punched bodies' first cut of the
+    /// substep, for holding the bodies that follow them
+    /// (`world::step::punched_followers`).
+    pub(crate) uncut_displacements: Vec<Vec2<S>>,
+    /// Per slot, during that hold: 0, or 1 for a body cut at an obstacle,
+    /// `r + 1` for a body held behind one of rank `r`.
+    pub(crate) hold_rank: Vec<u32>,
+    /// The rows between two movable bodies, during that hold.
+    pub(crate) hold_links: Vec<u32>,
     /// Position change of each slot during the substep.
     pub(crate) displacements: Vec<Vec2<S>>,
     /// Union-find parents for islands.

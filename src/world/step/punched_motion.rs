@@ -33,6 +33,10 @@
 //!    out (an inelastic impact: a velocity it never moves by would push it
 //!    into the obstacle again next substep).
 //!
+//! 3. the bodies following a body cut in step 2 along their rows are held
+//!    behind it ([`super::punched_followers`]): their displacements are
+//!    shortened along their own paths.
+//!
 //! A punched body's motion is otherwise left as the solve made it: its rows
 //! with other moving bodies assume both move by `v·h` (a bullet's row with
 //! a free box it punched held the bullet in front of the box only because
@@ -47,6 +51,8 @@ use crate::geometry::Toi;
 use crate::math::Scalar;
 use crate::solver::StepContext;
 use crate::world::World;
+
+use super::punched_followers::hold_followers_behind;
 
 impl<S: Scalar> World<S> {
     /// Keeps the velocities the narrow phase saw, for
@@ -183,7 +189,16 @@ impl<S: Scalar> World<S> {
         if with_row {
             punched_obstacles.retain(|&(_, other)| other != u32::MAX);
         }
-        self.cut_punched_at_immovable_partners();
+        if self.cut_punched_at_immovable_partners(true) {
+            let context = &mut self.step_context;
+            hold_followers_behind(
+                &context.constraints,
+                &mut context.hold_links,
+                &mut context.displacements,
+                &context.uncut_displacements,
+                &mut context.hold_rank,
+            );
+        }
     }
 
     /// Step 2 of the [module docs](self): each punched body's displacement
@@ -191,10 +206,14 @@ impl<S: Scalar> World<S> {
     /// the immovable bodies it is paired with (this substep's pairs and
     /// those step 1 found) but has no row with, and its approach along that
     /// normal is taken out. Called from [`World::cut_punched_motion`] and
-    /// again after [`World::project_out_of_immovable`].
-    pub(super) fn cut_punched_at_immovable_partners(&mut self) {
+    /// again after [`World::project_out_of_immovable`]. With `rank` (the
+    /// first call), the displacements before the first cut are kept and
+    /// each cut body is ranked 1 for [`hold_followers_behind`]; returns
+    /// whether any body was cut then.
+    pub(super) fn cut_punched_at_immovable_partners(&mut self, rank: bool) -> bool {
         let half_slop = self.settings.linear_slop.half();
         let context = &mut self.step_context;
+        let mut any_cut = false;
         for &(mover, other) in &context.punched_obstacles {
             let (Some(mb), Some(ob)) = (
                 self.slots[mover as usize].body.as_ref(),
@@ -233,6 +252,19 @@ impl<S: Scalar> World<S> {
                 if past <= half_slop {
                     continue;
                 }
+                if rank {
+                    if !any_cut {
+                        // The displacements before the first cut: the
+                        // hold measures its rows against them.
+                        context
+                            .uncut_displacements
+                            .clone_from(&context.displacements);
+                        context.hold_rank.clear();
+                        context.hold_rank.resize(context.displacements.len(), 0);
+                    }
+                    context.hold_rank[mover as usize] = 1;
+                    any_cut = true;
+                }
                 context.displacements[mover as usize] = full - normal.scale(past);
                 // The impact is inelastic: the approach along the
                 // normal (from the mover to the obstacle) is taken
@@ -244,5 +276,6 @@ impl<S: Scalar> World<S> {
                 }
             }
         }
+        any_cut
     }
 }
