@@ -829,11 +829,12 @@ fn free_stiff_chains_dropped_or_thrown_onto_the_ground_never_gain_energy() {
 /// cases gained energy (first rises up to 5.8e3 J: 20 circles of 0.1,
 /// ×30 first, ω·h 100, thrown at ×5, friction 1), and a 20-link chain
 /// with a 1000× end at ω·h 100 thrown at ×5 without friction reached
-/// 2.1e16 J and was flung to the world's bounds. Open (printed, not
-/// asserted: "highest at the end"): where the contact rounds never
-/// settle (3 links with a 1000× end at ω·h 100, or of 0.003 at ω·h 1000),
-/// the group takes its rigid safe point tick after tick and stands
-/// frozen on the one body that touches the ground, 0.05 to 0.19 above it.
+/// 2.1e16 J and was flung to the world's bounds. With the safe point
+/// alone, where the contact rounds never settled (3 links with a 1000× end
+/// at ω·h 100, or of 0.003 at ω·h 1000) the group took it tick after tick
+/// and stood frozen on the one body touching the ground, 0.05 to 0.19
+/// above it after 10 s (printed: "highest at the end"); the rounds now
+/// start each pass on the matrix at their iterate.
 #[test]
 #[allow(clippy::float_arithmetic)]
 fn free_stiff_chains_of_boxes_or_circles_thrown_hard_near_the_bounds_never_gain_energy() {

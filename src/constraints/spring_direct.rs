@@ -422,13 +422,34 @@ impl<S: Scalar> DirectScratch<S> {
         );
         let mut shifted = core::mem::take(&mut self.shifted);
         let coupled = self.couple_contacts(supports, velocities, position_velocities, &mut shifted);
+        let mut settled = true;
         if coupled {
+            settled = false;
             // The contacts' impulses are now fixed loads: the exact
             // (Newton) solve again from the linear prediction, on the
             // same factor (a chord iteration while it contracts); the
             // contacts then see the nonlinear answer, until their
             // impulses settle.
             for _ in 0..CONTACT_ROUNDS {
+                if any_radial {
+                    // The passes on the matrix where the contacts' linear
+                    // increments put the group: they turn its poles, and a
+                    // very stiff pole's curvature over that turn is an
+                    // impulse far larger than the contacts' (3 links of
+                    // 0.003 at ω·h = 1000 resting on the ground: λ ≈ 1
+                    // against a contact impulse of 7·10⁻⁴), which the
+                    // factor of the poles before the turn projected into
+                    // the soft sideways motions (a first pass of 2.5 u/s,
+                    // then 7·10⁴: the rounds never settled).
+                    if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
+                        break;
+                    }
+                    core::mem::swap(&mut self.building, &mut self.kept);
+                    self.kept_valid = factor(&self.kept, &mut self.kept_factor);
+                    if !self.kept_valid {
+                        break;
+                    }
+                }
                 self.iterate(
                     rows,
                     radial,
@@ -454,6 +475,7 @@ impl<S: Scalar> DirectScratch<S> {
                 let total = self.impulses.iter().fold(S::ZERO, |m, x| m.max(x.abs()));
                 let change = self.solve_contacts(supports, position_velocities, &mut shifted);
                 if change <= total.mul(S::from_ratio(1, CONTACT_TOLERANCE)) {
+                    settled = true;
                     break;
                 }
             }
@@ -484,7 +506,14 @@ impl<S: Scalar> DirectScratch<S> {
         }
         if any_radial || coupled {
             let held = coupled.then_some(&mut *supports);
-            self.keep_energy(rows, radial, held, velocities, position_velocities, h);
+            self.keep_energy(
+                rows,
+                radial,
+                (held, settled),
+                velocities,
+                position_velocities,
+                h,
+            );
         }
         self.apply(rows, radial, position_velocities, h);
         self.shifted = shifted;
@@ -1362,7 +1391,7 @@ impl<S: Scalar> DirectScratch<S> {
         &mut self,
         rows: &[SpringRow<S>],
         radial: &[RadialRow<S>],
-        mut held: Option<&mut SupportScratch<S>>,
+        (mut held, settled): (Option<&mut SupportScratch<S>>, bool),
         velocities: &[Vec2<S>],
         p: &mut [Vec2<S>],
         h: S,
@@ -1423,7 +1452,7 @@ impl<S: Scalar> DirectScratch<S> {
         let mut exponent = 0;
         loop {
             let mut failing = self.failing_groups(rows, radial, velocities, p, h);
-            if exponent > 0
+            if (exponent > 0 || !settled)
                 && let Some(supports) = held.as_deref()
             {
                 failing += self.reopen_entering(supports, p);
