@@ -32,7 +32,9 @@
 //!
 //! Figures print with `--nocapture`.
 
+mod common;
 use clockwork2d::prelude::*;
+use common::depth::shape_depth;
 
 const SLOP: f64 = 1e-4;
 /// Read-back rounding of a position: an I32F32 step is 2.3e-10 and a
@@ -313,36 +315,6 @@ fn shape_of(boxed: bool, size: f64) -> Shape {
     }
 }
 
-/// Penetration depth of two shapes at `pa` and `pb` (negative: apart).
-fn depth(sa: &Shape, pa: (f64, f64), sb: &Shape, pb: (f64, f64)) -> f64 {
-    let half = |s: &Shape| match s {
-        Shape::Circle { radius } => (radius.to_f64(), radius.to_f64()),
-        Shape::Aabb { half_extents } => half_extents.to_f64(),
-    };
-    let (dx, dy) = (pb.0 - pa.0, pb.1 - pa.1);
-    match (sa, sb) {
-        (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) => {
-            ra.to_f64() + rb.to_f64() - dx.hypot(dy)
-        }
-        (Shape::Aabb { .. }, Shape::Aabb { .. }) => {
-            let (ha, hb) = (half(sa), half(sb));
-            (ha.0 + hb.0 - dx.abs()).min(ha.1 + hb.1 - dy.abs())
-        }
-        (Shape::Circle { radius }, Shape::Aabb { .. })
-        | (Shape::Aabb { .. }, Shape::Circle { radius }) => {
-            let h = if matches!(sa, Shape::Aabb { .. }) {
-                half(sa)
-            } else {
-                half(sb)
-            };
-            let (ex, ey) = (dx.abs() - h.0, dy.abs() - h.1);
-            let outside = ex.max(0.0).hypot(ey.max(0.0));
-            let inside = ex.max(ey).min(0.0);
-            radius.to_f64() - (outside + inside)
-        }
-    }
-}
-
 /// Worst overlap of any two bodies (the wall included), and of any body
 /// with the wall, over 60 ticks.
 fn run_row(r: &Row) -> (f64, f64) {
@@ -413,7 +385,7 @@ fn run_row(r: &Row) -> (f64, f64) {
             .collect();
         for i in 0..bodies.len() {
             for j in i + 1..bodies.len() {
-                let d = depth(&bodies[i].1, at[i], &bodies[j].1, at[j]);
+                let d = shape_depth(bodies[i].1, at[i], bodies[j].1, at[j]);
                 worst.0 = worst.0.max(d);
                 // Body 0 is the wall.
                 if i == 0 {

@@ -34,8 +34,10 @@
 //! into a fixed body: `linear_slop` plus rounding (`PENETRATION_TOLERANCE`).
 #![allow(clippy::float_arithmetic)] // reference values in f64
 
+mod common;
 use clockwork2d::geometry::Shape;
 use clockwork2d::prelude::*;
+use common::depth::shape_depth;
 
 /// The engine's default linear slop.
 const SLOP: f64 = 1e-4;
@@ -54,38 +56,6 @@ fn pos(world: &World, id: BodyId) -> (f64, f64) {
 
 fn dist(a: (f64, f64), b: (f64, f64)) -> f64 {
     (b.0 - a.0).hypot(b.1 - a.1)
-}
-
-/// Depth of the overlap of two shapes (positive: overlapping), in f64.
-fn depth(a: Shape, pa: (f64, f64), b: Shape, pb: (f64, f64)) -> f64 {
-    let (dx, dy) = (pb.0 - pa.0, pb.1 - pa.1);
-    match (a, b) {
-        (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) => {
-            ra.to_f64() + rb.to_f64() - dx.hypot(dy)
-        }
-        (Shape::Aabb { half_extents: ha }, Shape::Aabb { half_extents: hb }) => {
-            let (ha, hb) = (ha.to_f64(), hb.to_f64());
-            let ox = ha.0 + hb.0 - dx.abs();
-            let oy = ha.1 + hb.1 - dy.abs();
-            ox.min(oy)
-        }
-        (Shape::Circle { radius }, Shape::Aabb { half_extents }) => {
-            circle_box_depth(radius.to_f64(), pa, half_extents.to_f64(), pb)
-        }
-        (Shape::Aabb { half_extents }, Shape::Circle { radius }) => {
-            circle_box_depth(radius.to_f64(), pb, half_extents.to_f64(), pa)
-        }
-    }
-}
-
-fn circle_box_depth(r: f64, c: (f64, f64), half: (f64, f64), b: (f64, f64)) -> f64 {
-    let (dx, dy) = (c.0 - b.0, c.1 - b.1);
-    if dx.abs() <= half.0 && dy.abs() <= half.1 {
-        // Centre inside: depth to the nearest face plus the radius.
-        return r + (half.0 - dx.abs()).min(half.1 - dy.abs());
-    }
-    let (qx, qy) = (dx.clamp(-half.0, half.0), dy.clamp(-half.1, half.1));
-    r - (dx - qx).hypot(dy - qy)
 }
 
 /// Whether the straight rope from `a` to `b` passes through the inside of
@@ -219,7 +189,7 @@ impl Roped {
             }
             let deepest = fixed
                 .iter()
-                .map(|&(s, q)| depth(shape, p, s, q))
+                .map(|&(s, q)| shape_depth(shape, p, s, q))
                 .fold(f64::NEG_INFINITY, f64::max);
             report.penetration = report.penetration.max(deepest);
             let taut = stretch > -1e-3;

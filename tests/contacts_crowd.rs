@@ -17,6 +17,7 @@
 mod common;
 
 use clockwork2d::prelude::*;
+use common::depth::{half_extents, shape_depth};
 
 const WALL: f64 = 2.0;
 
@@ -36,45 +37,6 @@ fn container(world: &mut World, half_w: f64, height: f64) {
                 BodyDef::fixed(Shape::aabb(vec2(t, height / 2.0))).position(vec2(x, height / 2.0)),
             )
             .unwrap();
-    }
-}
-
-/// The half extents of a body's bounding box.
-fn half_extents(shape: Shape) -> (f64, f64) {
-    match shape {
-        Shape::Circle { radius } => (radius.to_f64(), radius.to_f64()),
-        Shape::Aabb { half_extents } => (half_extents.x.to_f64(), half_extents.y.to_f64()),
-    }
-}
-
-/// Penetration depth of two shapes at the given positions (> 0 when they
-/// overlap), computed in f64 (measurement only).
-fn overlap(sa: Shape, pa: (f64, f64), sb: Shape, pb: (f64, f64)) -> f64 {
-    let (dx, dy) = (pb.0 - pa.0, pb.1 - pa.1);
-    match (sa, sb) {
-        (Shape::Circle { radius: ra }, Shape::Circle { radius: rb }) => {
-            ra.to_f64() + rb.to_f64() - dx.hypot(dy)
-        }
-        (Shape::Aabb { .. }, Shape::Aabb { .. }) => {
-            let (ha, hb) = (half_extents(sa), half_extents(sb));
-            (ha.0 + hb.0 - dx.abs()).min(ha.1 + hb.1 - dy.abs())
-        }
-        (Shape::Circle { radius }, Shape::Aabb { .. })
-        | (Shape::Aabb { .. }, Shape::Circle { radius }) => {
-            let (h, c, b) = if let Shape::Aabb { .. } = sa {
-                (half_extents(sa), pb, pa)
-            } else {
-                (half_extents(sb), pa, pb)
-            };
-            let q = (c.0 - b.0, c.1 - b.1);
-            let out = ((q.0.abs() - h.0).max(0.0), (q.1.abs() - h.1).max(0.0));
-            let r = radius.to_f64();
-            if out.0 > 0.0 || out.1 > 0.0 {
-                r - out.0.hypot(out.1)
-            } else {
-                r + (h.0 - q.0.abs()).min(h.1 - q.1.abs())
-            }
-        }
     }
 }
 
@@ -100,7 +62,7 @@ fn max_overlap(world: &World, ids: &[BodyId]) -> f64 {
             if items[j].0 - items[j].3 > items[i].0 + items[i].3 {
                 break;
             }
-            let d = overlap(
+            let d = shape_depth(
                 items[i].2,
                 (items[i].0, items[i].1),
                 items[j].2,

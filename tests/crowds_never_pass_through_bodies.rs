@@ -29,6 +29,7 @@
 
 mod common;
 use clockwork2d::prelude::*;
+use common::add_closed_room;
 use common::split_mix::SplitMix;
 
 /// How far apart two bodies' boxes must be at both ends of a tick for the
@@ -88,17 +89,7 @@ fn crossings(crowd: Crowd) -> Vec<(usize, usize, usize)> {
         ..WorldSettings::default()
     });
     let (hw, hh, wall) = (4.0, 8.0, 0.1);
-    let t = wall / 2.0;
-    for (half, at) in [
-        ((hw + wall, t), (0.0, -hh - t)),
-        ((hw + wall, t), (0.0, hh + t)),
-        ((t, hh), (-hw - t, 0.0)),
-        ((t, hh), (hw + t, 0.0)),
-    ] {
-        world
-            .add_body(BodyDef::fixed(Shape::aabb(vec2(half.0, half.1))).position(vec2(at.0, at.1)))
-            .expect("wall");
-    }
+    add_closed_room(&mut world, (0.0, 0.0), (hw, hh), wall);
     let mut rng = SplitMix(crowd.seed);
     let mut bodies = Vec::new();
     for k in 0..crowd.count {

@@ -29,6 +29,7 @@
 
 mod common;
 use clockwork2d::prelude::*;
+use common::add_closed_room;
 use common::split_mix::SplitMix;
 
 const SLOP: f64 = 1e-4;
@@ -105,20 +106,7 @@ fn build(room: &Room) -> (World, Vec<BodyId>) {
         ..WorldSettings::default()
     });
     let (hw, hh) = room.half;
-    let (w, t) = (room.wall, room.wall / 2.0);
-    for (half, at) in [
-        ((hw + w, t), (0.0, -hh - t)),
-        ((hw + w, t), (0.0, hh + t)),
-        ((t, hh), (-hw - t, 0.0)),
-        ((t, hh), (hw + t, 0.0)),
-    ] {
-        world
-            .add_body(
-                BodyDef::fixed(Shape::aabb(vec2(half.0, half.1)))
-                    .position(vec2(room.centre.0 + at.0, room.centre.1 + at.1)),
-            )
-            .expect("wall");
-    }
+    add_closed_room(&mut world, room.centre, (hw, hh), room.wall);
     let columns = ((2.0 * hw) / 0.5) as usize;
     let mut rng = SplitMix(room.seed);
     let bodies = (0..room.bodies)

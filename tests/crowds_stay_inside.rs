@@ -28,6 +28,7 @@
 use clockwork2d::prelude::*;
 
 mod common;
+use common::add_closed_room;
 use common::split_mix::SplitMix;
 
 const SLOP: f64 = 1e-4;
@@ -51,20 +52,7 @@ fn filled_room(
         ..WorldSettings::default()
     });
     let (hw, hh) = HALF;
-    let t = wall / 2.0;
-    for (half, at) in [
-        ((hw + wall, t), (0.0, -hh - t)),
-        ((hw + wall, t), (0.0, hh + t)),
-        ((t, hh), (-hw - t, 0.0)),
-        ((t, hh), (hw + t, 0.0)),
-    ] {
-        world
-            .add_body(
-                BodyDef::fixed(Shape::aabb(vec2(half.0, half.1)))
-                    .position(vec2(centre.0 + at.0, centre.1 + at.1)),
-            )
-            .expect("wall");
-    }
+    add_closed_room(&mut world, centre, (hw, hh), wall);
     let mut rng = SplitMix(seed);
     let bodies = (0..300)
         .map(|k| {

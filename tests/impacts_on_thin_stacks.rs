@@ -32,7 +32,9 @@
 //!
 //! Figures print with `--nocapture`.
 
+mod common;
 use clockwork2d::prelude::*;
+use common::depth::{box_box_depth, circle_box_depth};
 
 const SLOP: f64 = 1e-4;
 const G: f64 = 10.0;
@@ -69,24 +71,6 @@ struct Outcome {
     rise: f64,
     /// The start's kinetic energy (the scale of the energy figures).
     e0: f64,
-}
-
-/// Depth of circle (c, r) in the box (p, half): r minus the distance from
-/// the centre to the box (negative distance inside: the distance to the
-/// nearest face).
-fn circle_box_depth(c: (f64, f64), r: f64, p: (f64, f64), half: (f64, f64)) -> f64 {
-    let (dx, dy) = ((c.0 - p.0).abs() - half.0, (c.1 - p.1).abs() - half.1);
-    let outside = dx.max(0.0).hypot(dy.max(0.0));
-    let inside = dx.max(dy).min(0.0);
-    r - (outside + inside)
-}
-
-/// Overlap of two boxes: the smaller of the x and y overlaps (how far one
-/// must move to separate them), or ≤ 0 when apart.
-fn box_box_depth(p: (f64, f64), a: (f64, f64), q: (f64, f64), b: (f64, f64)) -> f64 {
-    let ox = a.0 + b.0 - (p.0 - q.0).abs();
-    let oy = a.1 + b.1 - (p.1 - q.1).abs();
-    ox.min(oy)
 }
 
 fn run(c: &Case) -> Outcome {

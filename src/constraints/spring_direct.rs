@@ -441,12 +441,7 @@ impl<S: Scalar> DirectScratch<S> {
                     // factor of the poles before the turn projected into
                     // the soft sideways motions (a first pass of 2.5 u/s,
                     // then 7·10⁴: the rounds never settled).
-                    if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
-                        break;
-                    }
-                    core::mem::swap(&mut self.building, &mut self.kept);
-                    self.kept_valid = factor(&self.kept, &mut self.kept_factor);
-                    if !self.kept_valid {
+                    if !self.refactor_at(rows, radial, lanes, (position_velocities, h)) {
                         break;
                     }
                 }
@@ -462,12 +457,7 @@ impl<S: Scalar> DirectScratch<S> {
                     // linearisation here (an impact turns and loads the
                     // poles: the start's matrix then misjudges the
                     // response, and the rounds overshoot).
-                    if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
-                        break;
-                    }
-                    core::mem::swap(&mut self.building, &mut self.kept);
-                    self.kept_valid = factor(&self.kept, &mut self.kept_factor);
-                    if !self.kept_valid {
+                    if !self.refactor_at(rows, radial, lanes, (position_velocities, h)) {
                         break;
                     }
                     self.contact_responses(supports);
@@ -544,12 +534,7 @@ impl<S: Scalar> DirectScratch<S> {
         for pass in 0..passes {
             if relinearise {
                 // Newton: the matrix at the current iterate.
-                if !self.build_matrix(rows, radial, lanes, (position_velocities, h)) {
-                    break;
-                }
-                core::mem::swap(&mut self.building, &mut self.kept);
-                self.kept_valid = factor(&self.kept, &mut self.kept_factor);
-                if !self.kept_valid {
+                if !self.refactor_at(rows, radial, lanes, (position_velocities, h)) {
                     break;
                 }
                 stale = false;
@@ -1085,6 +1070,25 @@ impl<S: Scalar> DirectScratch<S> {
             }
             self.mass.push(last.1);
         }
+    }
+
+    /// The kept factor rebuilt at the iterate `p`: the matrix there
+    /// ([`Self::build_matrix`]) becomes the kept one, factored. `false` when
+    /// it cannot be built or factored (the callers then stop their passes;
+    /// `kept_valid` says whether the kept factor may still be used).
+    fn refactor_at(
+        &mut self,
+        rows: &[SpringRow<S>],
+        radial: &[RadialRow<S>],
+        lanes: usize,
+        (p, h): (&[Vec2<S>], S),
+    ) -> bool {
+        if !self.build_matrix(rows, radial, lanes, (p, h)) {
+            return false;
+        }
+        core::mem::swap(&mut self.building, &mut self.kept);
+        self.kept_valid = factor(&self.kept, &mut self.kept_factor);
+        self.kept_valid
     }
 
     /// Builds `T⁻¹ + Gᵀ·D_g·G` in the envelope (one unknown per body, or

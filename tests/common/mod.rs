@@ -1,6 +1,7 @@
-//! Set-up shared by the integration tests: scene builders (here), edited
-//! files (`file_checksum`), proptest strategies (`fx_strategies`), the
-//! oscillator tests' settings and probes (`oscillators`), raw-bit access to
+//! Set-up shared by the integration tests: scene builders (here), how deep
+//! two shapes overlap (`depth`), edited files (`file_checksum`), proptest
+//! strategies (`fx_strategies`), the oscillator tests' settings and probes
+//! (`oscillators`), raw-bit access to
 //! the fixed-point types for exact reference arithmetic (`raw_fixed`),
 //! resting scenes of boxes and their measures (`resting`), a seeded random
 //! generator for random scenes (`split_mix`).
@@ -9,6 +10,7 @@
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
 #![allow(dead_code)] // each test crate uses a different subset
 
+pub mod depth;
 pub mod file_checksum;
 pub mod fx_strategies;
 pub mod oscillators;
@@ -24,6 +26,26 @@ pub fn add_ground(world: &mut World) -> BodyId {
     world
         .add_body(BodyDef::fixed(Shape::aabb(vec2(50.0, 0.5))).position(vec2(0.0, -0.5)))
         .expect("ground")
+}
+
+/// A closed room of four fixed walls `wall` thick around the interior of
+/// half extents `half` centred at `centre` (floor and ceiling span the
+/// side walls too, so the corners are closed).
+pub fn add_closed_room(world: &mut World, centre: (f64, f64), half: (f64, f64), wall: f64) {
+    let ((hw, hh), t) = (half, wall / 2.0);
+    for (half, at) in [
+        ((hw + wall, t), (0.0, -hh - t)),
+        ((hw + wall, t), (0.0, hh + t)),
+        ((t, hh), (-hw - t, 0.0)),
+        ((t, hh), (hw + t, 0.0)),
+    ] {
+        world
+            .add_body(
+                BodyDef::fixed(Shape::aabb(vec2(half.0, half.1)))
+                    .position(vec2(centre.0 + at.0, centre.1 + at.1)),
+            )
+            .expect("wall");
+    }
 }
 
 /// A unit box (half extents 0.5, density 1, so mass 1) at `(x, y)`.
