@@ -810,7 +810,9 @@ fn free_stiff_chains_dropped_or_thrown_onto_the_ground_never_gain_energy() {
         failures.len(),
         failures.join("\n")
     );
-    assert!(ran >= 40, "only {ran} cases ran");
+    // 96 cases; debug runs the 3-link chains at ω·h 10 only (24).
+    let expected = if cfg!(debug_assertions) { 24 } else { 96 };
+    assert_eq!(ran, expected, "cases run");
 }
 
 /// Free chains beyond the family above: 3 and 20 links of circles or of
@@ -867,7 +869,9 @@ fn free_stiff_chains_of_boxes_or_circles_thrown_hard_near_the_bounds_never_gain_
                                 if origin.0 != 0.0 && throw != 5.0 {
                                     continue;
                                 }
-                                if cfg!(debug_assertions) && (omega_h == 1000.0 || throw == 5.0) {
+                                // Debug (120 ticks) runs the throws that land
+                                // within them: ×20 chains are still in the air.
+                                if cfg!(debug_assertions) && (omega_h == 1000.0 || throw == 20.0) {
                                     continue;
                                 }
                                 let top = -0.5;
