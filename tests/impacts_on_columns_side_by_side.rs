@@ -37,6 +37,7 @@
 mod common;
 use clockwork2d::prelude::*;
 use common::depth::{box_box_depth, circle_box_depth};
+use common::sampled_energy::energy_and_allowance;
 
 const SLOP: f64 = 1e-4;
 const G: f64 = 10.0;
@@ -160,19 +161,7 @@ fn run(c: &Case) -> Outcome {
         .expect("ball");
     let mut all = bodies.clone();
     all.push(ball);
-    let energy = |world: &World| {
-        all.iter().fold((0.0, 0.0), |(e, allowance), &id| {
-            let b = world.body(id).unwrap();
-            let m = b.mass().to_f64();
-            let (vx, vy) = b.velocity().to_f64();
-            let y = b.position().y.to_f64() - oy;
-            let speed = vx.hypot(vy);
-            (
-                e + 0.5 * m * speed * speed + m * G * y,
-                allowance + m * speed * G * H / 2.0 + m * (G * H / 2.0).powi(2) / 2.0,
-            )
-        })
-    };
+    let energy = |world: &World| energy_and_allowance(world, &all, G, H, oy);
     let (e0, allowance0) = energy(&world);
     let mut out = Outcome {
         ball_depth: f64::MIN,

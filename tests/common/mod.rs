@@ -1,10 +1,11 @@
 //! Set-up shared by the integration tests: scene builders (here), how deep
 //! two shapes overlap (`depth`), edited files (`file_checksum`), proptest
 //! strategies (`fx_strategies`), the oscillator tests' settings and probes
-//! (`oscillators`), raw-bit access to
-//! the fixed-point types for exact reference arithmetic (`raw_fixed`),
-//! resting scenes of boxes and their measures (`resting`), a seeded random
-//! generator for random scenes (`split_mix`).
+//! (`oscillators`), raw-bit access to the fixed-point types for exact
+//! reference arithmetic (`raw_fixed`), resting scenes of boxes and their
+//! measures (`resting`), the energy of bodies read at tick ends with its
+//! sampling allowance (`sampled_energy`), a seeded random generator for
+//! random scenes (`split_mix`).
 //!
 //! Every float here is a literal or a test-side measurement converted at the
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
@@ -16,6 +17,7 @@ pub mod fx_strategies;
 pub mod oscillators;
 pub mod raw_fixed;
 pub mod resting;
+pub mod sampled_energy;
 pub mod split_mix;
 
 use clockwork2d::prelude::*;
