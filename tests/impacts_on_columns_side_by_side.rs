@@ -289,8 +289,8 @@ fn a_fast_ball_on_columns_side_by_side_neither_sinks_a_box_nor_gains_energy() {
 /// (`above` 0) or dropped from above them: the middle and the last of
 /// three columns, other gaps (1e-3, 0.01, 0.08), 3 and 20 boxes per
 /// column, a heavy (100x) top box on every column, bullets, near the
-/// world's bounds. The cases `keep` accepts.
-fn variants(above: f64, keep: impl Fn(&Case) -> bool) -> Vec<Case> {
+/// world's bounds.
+fn variants(above: f64) -> Vec<Case> {
     let mut cases = Vec::new();
     for gap in [1e-3, 0.01, 0.08] {
         for (columns, aim) in [(3, 1.0), (3, 2.0), (2, 0.0)] {
@@ -301,7 +301,7 @@ fn variants(above: f64, keep: impl Fn(&Case) -> bool) -> Vec<Case> {
                             for e in [0.0, 1.0] {
                                 for bullet in [false, true] {
                                     for origin in [(0.0, 0.0), (30_000.0, -30_000.0)] {
-                                        let case = Case {
+                                        cases.push(Case {
                                             columns,
                                             count,
                                             gap,
@@ -314,10 +314,7 @@ fn variants(above: f64, keep: impl Fn(&Case) -> bool) -> Vec<Case> {
                                             above,
                                             origin,
                                             ..Case::base()
-                                        };
-                                        if keep(&case) {
-                                            cases.push(case);
-                                        }
+                                        });
                                     }
                                 }
                             }
@@ -330,39 +327,32 @@ fn variants(above: f64, keep: impl Fn(&Case) -> bool) -> Vec<Case> {
     cases
 }
 
-/// A ball 100x a box, elastic, at 1000 units/s onto columns of 3 boxes
-/// (see the ignored test below).
-fn heavy_elastic_on_short_columns(c: &Case) -> bool {
-    c.count == 3 && c.ratio == 100.0 && c.e == 1.0 && c.speed == 1000.0
-}
-
+/// Every variant, a ball 100x a box, elastic (e = 1), at 1000 units/s onto
+/// columns of only 3 boxes among them (its bounce drives the boxes below
+/// into each other and the ground, and the impact's impulses are left in
+/// the column after the ball has gone): before the fix those 72 throws
+/// gained up to 0.65 of the ball's energy (36 failed; boxes thrown up at
+/// `max_speed`).
 #[test]
 fn other_gaps_counts_and_placements_hold_the_ball_too() {
-    check(&variants(0.0, |c| !heavy_elastic_on_short_columns(c)));
-}
-
-/// Still open (failing before the fix too): a ball 100x a box, elastic
-/// (e = 1), at 1000 units/s onto columns of only 3 boxes gains up to 0.65
-/// of its energy (no box sinks); the same throw onto a single column holds
-/// (`impacts_on_thin_stacks`). 36 of these 72 throws fail, as before the
-/// fix.
-#[test]
-#[ignore = "issue 13: a heavy elastic ball at 1000 units/s on short columns side by side gains energy; 36 of 72 throws fail"]
-fn a_heavy_elastic_ball_on_short_columns_side_by_side_still_open() {
-    check(&variants(0.0, heavy_elastic_on_short_columns));
+    check(&variants(0.0));
 }
 
 /// Still open: the same variants dropped from 0.37 and 2.9 above the
 /// columns, arriving within a tick: a box ends up to 0.02 into the one
-/// below (the exact solve of the impact's substep leaves bodies of the
-/// struck column moving, and the next substeps, with more than one body
-/// moving fast, take sequential impulses). 424 of these 2 304 throws fail
-/// (1 464 before the fix).
+/// below. Traced: the ball joins the group's spanning tree through the
+/// first of its rows apart (to the bottom box of the first column, not
+/// closing within the substep), leaving its row to the struck box off the
+/// exact solve; a heavy ball's catch by its speculative row is
+/// warm-started into the next substep; and 20-box columns under a ball
+/// 100x a box make a group of uneven masses above the block solver's size
+/// (its covering trees). 280 of these 2 304 throws fail (1 464 before
+/// session 13's fix, 424 before session 14's).
 #[test]
-#[ignore = "issue 13: a ball dropped from a height onto columns side by side; 424 of 2304 throws fail"]
+#[ignore = "issue 13: a ball dropped from a height onto columns side by side; 280 of 2304 throws fail"]
 fn a_ball_dropped_from_a_height_onto_columns_side_by_side_still_open() {
-    let mut cases = variants(0.37, |_| true);
-    cases.extend(variants(2.9, |_| true));
+    let mut cases = variants(0.37);
+    cases.extend(variants(2.9));
     check(&cases);
 }
 
@@ -422,10 +412,10 @@ fn columns_of_touching_circles_side_by_side_still_open() {
 /// the columns' height, is folded into the exact solve before the rows of
 /// the columns and leaves a row of a column dependent (left to sequential
 /// impulses). Folding such rows last fixed a few and broke a crowd test.
-/// 217 of these 288 throws fail (227 before the fix; box depth up to
-/// 14.9).
+/// 212 of these 288 throws fail (227 before session 13's fix, 217 before
+/// session 14's; box depth up to 16.7).
 #[test]
-#[ignore = "issue 13: a fast ball on the seam between columns apart; 217 of 288 throws fail"]
+#[ignore = "issue 13: a fast ball on the seam between columns apart; 212 of 288 throws fail"]
 fn a_fast_ball_on_the_seam_between_columns_apart_still_open() {
     let mut cases = Vec::new();
     for columns in [2, 3] {

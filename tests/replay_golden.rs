@@ -32,10 +32,10 @@ const SEED: u64 = 2024;
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
-    ("pyramid", 0x9c7755f33d872f77),
+    ("pyramid", 0xbf677352bb8e8e71),
     ("balls", 0xa3eb9c0c644f4b4e),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0x216b949881349e32),
+    ("mixed", 0x41916eda5f50f263),
 ];
 // END GOLDEN
 

@@ -356,14 +356,16 @@ impl RowGroups {
     ///   body of infinite mass, and no two of its bodies approach or part
     ///   faster than one substep of gravity, [`resting_or_struck`]), or
     ///   rests but for one body striking it (two columns of thin boxes
-    ///   side by side, a ball arriving on one of them), and has at most
+    ///   side by side, a ball arriving on one of them) and for boxes
+    ///   pressed together or parting along their faces (the columns in
+    ///   the substeps after the impact), and has at most
     ///   [`CYCLIC_TREE_ROWS`] rows: the same spanning-tree solve. Sequential
     ///   impulses left a 10-row pyramid of equal boxes 0.0037 low (bound
     ///   10·slop = 0.001) and pass a load down `n` rows only in `O(n²)`
     ///   sweeps: a ball at 50 units/s pushed boxes of such a column wholly
     ///   into the ones below.
-    /// * The rest (cyclic groups of even masses in motion, such as a ball
-    ///   pit being filled, or larger than [`CYCLIC_TREE_ROWS`]) take
+    /// * The rest (cyclic groups of even masses in motion at a slant, such
+    ///   as a ball pit being filled, or larger than [`CYCLIC_TREE_ROWS`]) take
     ///   sequential impulses, whose cost stays linear. The spanning-tree
     ///   solve's active-set rounds cost far more where contacts come and go
     ///   (a floor pile of the 5 000-ball pit, 1 400–2 900 rows in its first
@@ -641,8 +643,9 @@ fn cyclic(flags: u8) -> bool {
     flags & TOUCHING_CYCLE != 0 || flags & (APART_CYCLE | APART_EDGE) == APART_CYCLE | APART_EDGE
 }
 
-/// Whether a group rests, or rests but for one body striking it: the
-/// spanning-tree solve of an even-mass cyclic group ([`RowGroups::classify`]).
+/// Whether a group rests, or rests but for one body striking it and for
+/// bodies pressed together along faces: the spanning-tree solve of an
+/// even-mass cyclic group ([`RowGroups::classify`]).
 ///
 /// *Resting*: no two of its dynamic bodies approach or part along a row
 /// faster than `rest_speed` (one substep of gravity, `|g|·h`: bodies
@@ -655,16 +658,27 @@ fn cyclic(flags: u8) -> bool {
 /// nothing and may lie at any angle (a ball resting on a seam sees the
 /// boxes below through the seam at a slant).
 ///
-/// *Struck*: the rows faster than `rest_speed` all hold one body (the
-/// striker; its rows may lie at any angle), and the others are as above.
-/// Two columns of thin boxes side by side, a ball arriving at 50–1000
-/// units/s on one of them or on the seam (issue 13): the rows between the
-/// columns close cycles, and sequential impulses, which carry an impact
-/// down a chain of `n` rows only in `O(n²)` sweeps, left boxes wholly
-/// inside the ones below (0.02 deep) and up to 16 units through the
-/// ground. The exact solve stops the ball on the column as on the ground.
-/// Groups struck by several bodies at once (a pile being filled, the
-/// 5 000-ball pit) keep sequential impulses, whose cost stays linear.
+/// *Struck*: the rows faster than `rest_speed` that lie at a slant all
+/// hold one body (the striker), and the others are as above. Two columns
+/// of thin boxes side by side, a ball arriving at 50–1000 units/s on one
+/// of them or on the seam (issue 13): the rows between the columns close
+/// cycles, and sequential impulses, which carry an impact down a chain of
+/// `n` rows only in `O(n²)` sweeps, left boxes wholly inside the ones
+/// below (0.02 deep) and up to 16 units through the ground. The exact
+/// solve stops the ball on the column as on the ground. Groups struck by
+/// several bodies at once (a pile being filled, the 5 000-ball pit) keep
+/// sequential impulses, whose cost stays linear.
+///
+/// Fast rows along an axis (faces of boxes pressed together or parting)
+/// may be any number: an impact passed down a column of boxes leaves the
+/// rows of the column closing or opening faster than `rest_speed` for a
+/// substep or two. A ball 100× a box at 1 000 units/s, e = 1, on columns
+/// of 3 boxes side by side: its bounce drove the boxes of the struck
+/// column into each other and the ground at 3–9 units/s, and with the
+/// column on sequential impulses the impact's impulses, warm-started into
+/// the next substep after the ball had left, were carried back up the
+/// column only a row per sweep: the boxes left at `max_speed` (+0.65 of
+/// the ball's energy). The exact solve's active set releases them at once.
 fn resting_or_struck<S: Scalar>(
     rows: &[ContactConstraint<S>],
     group: &[usize],
@@ -683,11 +697,15 @@ fn resting_or_struck<S: Scalar>(
         let speed = (velocities[row.b as usize] - velocities[row.a as usize])
             .dot(row.normal)
             .abs();
+        let axis = row.normal.x == S::ZERO || row.normal.y == S::ZERO;
         if speed <= rest_speed {
-            let axis = row.normal.x == S::ZERO || row.normal.y == S::ZERO;
             if !axis && tiers[ri] != APART_TIER {
                 return false;
             }
+            continue;
+        }
+        // Pressed together or parting along a face: any number.
+        if axis {
             continue;
         }
         let ends = [Some(row.a), Some(row.b)];
