@@ -33,7 +33,7 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0xbf677352bb8e8e71),
-    ("balls", 0xa3eb9c0c644f4b4e),
+    ("balls", 0xbe6e46081c15766c),
     ("bullets", 0xe2394485569ea57a),
     ("mixed", 0x41916eda5f50f263),
 ];

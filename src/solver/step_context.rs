@@ -53,6 +53,9 @@ pub(crate) struct StepContext<S: Scalar> {
     /// `(punched body, immovable body)` pairs without a contact row: what
     /// the punched bodies are stopped at (working memory of that cut).
     pub(crate) punched_obstacles: Vec<(u32, u32)>,
+    /// Pairs of two movable bodies, one of them punched, without a contact
+    /// row (working memory of that cut; sorted).
+    pub(crate) punched_meetings: Vec<(u32, u32)>,
     /// The displacements before the punched bodies' first cut of the
     /// substep, for holding the bodies that follow them
     /// (`world::step::punched_followers`).

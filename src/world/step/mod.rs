@@ -13,7 +13,7 @@
 //! | narrow phase (pairs → contact rows, waking sleepers; run again with the ropes' turns of the bodies' paths when a straight sweep missed) | [`narrow_phase`], [`rope_turns`] |
 //! | rope rows | [`constraints`] |
 //! | grouping, warm start, velocity iterations (contacts solved with a stiff spring group left alone, their impulses added back after; covering-tree groups that run away solved again by sequential impulses) | [`solve`], [`constraints`], [`energy_guard`] |
-//! | integrate (bullets' time of impact; punched bodies stopped at immovable ones they have no row with, their followers held behind them) | [`integrate`], [`punched_motion`], [`punched_followers`] |
+//! | integrate (bullets' time of impact; punched bodies stopped at immovable ones they have no row with and where they meet movable ones they have no row with, their followers held behind them) | [`integrate`], [`punched_motion`], [`punched_followers`] |
 //! | position iterations | [`solve`] |
 //! | bound corrections, out of immovable bodies (punched bodies again), bounces, rebound sweep (beyond the proxies too), ropes settled | [`contacts`], [`punched_motion`], [`rebound_escape`] |
 //! | write back (bounds: freeze) | [`integrate`] |
