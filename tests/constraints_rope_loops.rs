@@ -61,6 +61,12 @@ struct Ring {
 }
 
 fn hang_ring(n: usize, ratio: f64, substeps: u32) -> Ring {
+    hang_ring_heavy_at(n, n / 2, ratio, substeps)
+}
+
+/// [`hang_ring`] with the heavy body the `heavy`-th link (0 is the one the
+/// hanger holds, `n/2` the one opposite it).
+fn hang_ring_heavy_at(n: usize, heavy: usize, ratio: f64, substeps: u32) -> Ring {
     let mut world = World::new(WorldSettings {
         substeps,
         ..WorldSettings::default()
@@ -69,7 +75,7 @@ fn hang_ring(n: usize, ratio: f64, substeps: u32) -> Ring {
     let links: Vec<(BodyId, f64)> = (0..n)
         .map(|i| {
             let angle = 2.0 * PI * i as f64 / n as f64;
-            let mass = if i == n / 2 {
+            let mass = if i == heavy {
                 LINK_MASS * ratio
             } else {
                 LINK_MASS
@@ -139,7 +145,7 @@ fn hang_ring(n: usize, ratio: f64, substeps: u32) -> Ring {
         ring.highest_energy = ring.highest_energy.max(energy);
     }
     println!(
-        "ring of {n} ropes, body {ratio}x, substeps {substeps}: worst stretch {:.5} %, last second {:.5} % (slop {:.5} %), highest energy {:+.4} J (bound {:.4})",
+        "ring of {n} ropes, body {ratio}x (link {heavy}), substeps {substeps}: worst stretch {:.5} %, last second {:.5} % (slop {:.5} %), highest energy {:+.4} J (bound {:.4})",
         ring.worst * 100.0,
         ring.last_second * 100.0,
         ring.slop_fraction * 100.0,
@@ -198,34 +204,50 @@ fn large_rings_of_ropes_keep_their_length() {
     }
 }
 
-/// Short rings round a very heavy body (3000× and 10⁴× a link) at one
-/// substep: the ring falls while it folds into two strands and then snaps
-/// taut under the heavy body. The energy bound holds (before the
-/// velocity sweeps took the ropes' sideways stiffness from the tension
-/// found so far in the substep: 10 ropes at 10⁴× gained 2272 J, 20 ropes
-/// 832 J) and the ring is back within the slop in its last second. The
-/// stretch during the jerk is NOT within the slop at one substep (10 ropes
-/// at 10⁴×: 45 %; at 3000×: 2.0 %); substeps 2 and 4 hold it (see notes).
+/// Short rings round a very heavy body (3000× and 10⁴× a link), the heavy
+/// body opposite the hanger, next to the link it holds, or a quarter of
+/// the way round, at one and two substeps: the ring falls while it folds
+/// into two strands and snaps taut under the heavy body, and every rope
+/// stays within the slop at every tick, with the energy bound. Debug runs
+/// take every 5th ring (the test profile is slow).
+///
+/// Before the settling rounds counted their own position impulses in the
+/// ropes' sideways stiffness (`rope_settle_side_stiffness` in
+/// `src/world/step/solve.rs`), the snap stretched the ring for a tick:
+/// 20 of these 120 rings failed, 10 ropes at 3000× by 9.4 %, 20 ropes at
+/// 10⁴× by 16.5 % (the velocity solve leaves the ropes that must catch
+/// the heavy body almost no impulse, and the rounds moved the light links
+/// sideways instead of lifting it). Before the velocity sweeps took the
+/// ropes' sideways stiffness from the tension found so far in the
+/// substep, 10 ropes at 10⁴× gained 2272 J.
+///
+/// Beyond this family (see `ARCHITECTURE.md`, ropes): at 3·10⁴× two rings
+/// of 120 end up to 6 % of the slop beyond it for a tick; at 10⁵× rings
+/// of 4 to 40 ropes come apart.
 #[test]
-fn short_rings_round_very_heavy_bodies_never_gain_energy() {
-    for &(n, ratio) in &[
-        (3, 10000.0),
-        (6, 10000.0),
-        (10, 3000.0),
-        (10, 10000.0),
-        (20, 10000.0),
-        (40, 10000.0),
-    ] {
-        let r = hang_ring(n, ratio, 1);
+fn short_rings_round_very_heavy_bodies_keep_their_length() {
+    let mut rings = Vec::new();
+    for n in [3usize, 4, 5, 6, 8, 10, 14, 20, 30, 40] {
+        for ratio in [3000.0, 10000.0] {
+            for heavy in [n / 2, 1, n / 4] {
+                for substeps in [1, 2] {
+                    rings.push((n, heavy, ratio, substeps));
+                }
+            }
+        }
+    }
+    let step = if cfg!(debug_assertions) { 5 } else { 1 };
+    for (n, heavy, ratio, substeps) in rings.into_iter().step_by(step) {
+        let r = hang_ring_heavy_at(n, heavy, ratio, substeps);
         assert!(
             r.highest_energy <= r.lift,
-            "ring {n} {ratio}x gained energy: {}",
+            "ring {n} {ratio}x (link {heavy}), substeps {substeps}: gained energy {}",
             r.highest_energy
         );
         assert!(
-            r.last_second <= r.slop_fraction * (1.0 + MARGIN),
-            "ring {n} {ratio}x: last second stretched {} (slop {})",
-            r.last_second,
+            r.worst <= r.slop_fraction * (1.0 + MARGIN),
+            "ring {n} {ratio}x (link {heavy}), substeps {substeps}: stretched {} (slop {})",
+            r.worst,
             r.slop_fraction
         );
     }

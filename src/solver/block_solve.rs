@@ -131,6 +131,10 @@ pub(crate) struct BlockScratch<S: Scalar> {
     /// The rope rows' sideways rows in the solve: `(row index, g)`, after
     /// the active rows in the system (see [`solve_group_velocities`]).
     sides: Vec<(usize, S)>,
+    /// The position impulse the position passes have applied to each row
+    /// (by row index) since the rope settling rounds began; empty outside
+    /// them (as the tree solve's `TreeScratch::applied`).
+    pub(crate) applied: Vec<S>,
 }
 
 impl<S: Scalar> BlockScratch<S> {
@@ -391,6 +395,9 @@ pub(crate) fn solve_group_positions<S: Scalar>(
         if work.rhs[..hard].iter().all(|x| !x.is_negative()) {
             for (i, &ri) in work.active.iter().enumerate() {
                 apply_impulse(&rows[ri], work.rhs[i], displacements);
+                if let Some(sum) = work.applied.get_mut(ri) {
+                    *sum = sum.add(work.rhs[i]);
+                }
             }
             for (k, &(ri, _)) in work.sides.iter().enumerate() {
                 apply_side_impulse(&rows[ri], work.rhs[hard + k], displacements);

@@ -134,6 +134,11 @@ pub(crate) struct TreeScratch<S: Scalar> {
     pub(crate) side_stiffness: Vec<S>,
     /// The solved sideways impulse per row.
     pub(crate) side_value: Vec<S>,
+    /// The position impulse the position passes have applied to each row
+    /// (by row index) since the rope settling rounds began; empty outside
+    /// them, and then nothing is summed (`World::settle_ropes` in
+    /// `world/step/contacts.rs` reads it for the ropes' sideways stiffness).
+    pub(crate) applied: Vec<S>,
     /// The residual `target − J v` per row on entry, the solved impulse
     /// per row on exit (0 for rows left out).
     pub(crate) value: Vec<S>,
@@ -865,6 +870,9 @@ fn solve_tree_position_rounds<S: Scalar>(
                     };
                     apply(&rows[ri], value, displacements);
                     apply_side(&rows[ri], side, displacements);
+                    if let Some(sum) = work.applied.get_mut(ri) {
+                        *sum = sum.add(value);
+                    }
                 }
             }
             // Rows left out that the correction stretched (or pushed in)

@@ -8,7 +8,7 @@
 //! [`World::bound_corrections`] → [`World::project_out_of_immovable`] →
 //! [`World::bounce`] → [`World::sweep_rebounds`] → write back.
 
-use super::solve::rope_position_pass;
+use super::solve::{rope_position_pass, rope_settle_side_stiffness};
 use crate::collision::{Proxy, contact_between, shape_toi};
 use crate::dynamics::BodyKind;
 use crate::geometry::Toi;
@@ -196,10 +196,15 @@ impl<S: Scalar> World<S> {
     /// resting: `sleep_linear_threshold · h` (as in
     /// [`World::bound_corrections`]).
     fn resting_move(&self) -> S {
-        let substeps = S::from_int(i32::try_from(self.settings.substeps).unwrap_or(1));
         self.settings
             .sleep_linear_threshold
-            .mul(self.settings.dt.div(substeps))
+            .mul(self.substep_length())
+    }
+
+    /// The substep's length `h = dt / substeps`.
+    fn substep_length(&self) -> S {
+        let substeps = S::from_int(i32::try_from(self.settings.substeps).unwrap_or(1));
+        self.settings.dt.div(substeps)
     }
 
     /// The last word on positions when ropes are active: each rope that a
@@ -251,6 +256,13 @@ impl<S: Scalar> World<S> {
     /// sequential corrections after the exact pass they undid part of it
     /// every round (a 50-link chain round a box stayed 13 % long); the
     /// position iterations of the next substep take them.
+    ///
+    /// From the second round on, each rope's sideways stiffness counts the
+    /// position impulse the rounds have applied to it
+    /// ([`rope_settle_side_stiffness`] in `step/solve.rs`): the multiplier
+    /// of the projection is what the rounds have found, not only the
+    /// velocity solve's impulse, which is nearly nothing on a rope that
+    /// snapped taut in the substep.
     pub(super) fn settle_ropes(&mut self) {
         if self.step_context.rope_rows.is_empty() {
             return;
@@ -282,7 +294,26 @@ impl<S: Scalar> World<S> {
         // links at rest: 5.6e-9 beyond the slop before a round, 1.1e-7
         // after; stopping after it kept the worse state).
         let mut previous = S::MAX;
+        let ropes = self.step_context.rope_rows.len();
+        let h = self.substep_length();
+        for applied in [
+            &mut self.step_context.tree.applied,
+            &mut self.step_context.rope_block.applied,
+        ] {
+            applied.clear();
+            applied.resize(ropes, S::ZERO);
+        }
         for pass in 0..=ROPE_SETTLE_MAX_PASSES {
+            if pass > 0 {
+                let context = &mut self.step_context;
+                rope_settle_side_stiffness(
+                    &context.joint_rows[..ropes],
+                    &context.rope_geometry,
+                    h,
+                    (&context.tree.applied, &context.rope_block.applied),
+                    &mut context.rope_side_stiffness,
+                );
+            }
             let worst = worst_rope_excess(&self.step_context, slop);
             if !worst.is_positive() {
                 break;
@@ -308,6 +339,9 @@ impl<S: Scalar> World<S> {
             rope_position_pass(context, &settings, true);
             self.project_rows_out_of_immovable(slop, resting, 1);
         }
+        // Outside the rounds the passes sum nothing.
+        self.step_context.tree.applied.clear();
+        self.step_context.rope_block.applied.clear();
     }
 
     /// Sweeps the motion each bounce added against the bouncing body's
