@@ -8,6 +8,7 @@ mod contact_cache;
 mod covered_corner;
 mod deflected_sweep;
 mod face_past_walls;
+mod grazing_miss;
 mod implied_rows;
 mod level_seam;
 mod narrow_phase;

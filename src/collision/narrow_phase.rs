@@ -15,6 +15,7 @@ use super::confined_pair::confined_contact;
 use super::covered_corner::covered_corner;
 use super::deflected_sweep::{Side, deflected_impact, earlier_turn};
 use super::face_past_walls::face_past_walls;
+use super::grazing_miss::passes_within_slop;
 use super::implied_rows::implied_rows;
 use super::level_seam::level_seam;
 use super::rope_turn::{rope_turn, rope_turned_contact};
@@ -381,6 +382,13 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                             vn = (vb - va).dot(turned.normal);
                             contact = turned;
                         }
+                        // A path within the slop keeps the start row
+                        // (`collision::grazing_miss`).
+                        None if passes_within_slop(
+                            (&body_a.shape, body_a.position, va.scale(h)),
+                            (&body_b.shape, body_b.position, vb.scale(h)),
+                            linear_slop,
+                        ) => {}
                         None => {
                             scratch.straight_misses += 1;
                             scratch.missed.push((a, b));
