@@ -33,9 +33,9 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0xbf677352bb8e8e71),
-    ("balls", 0x3f99fea723d7ad33),
+    ("balls", 0xbe6e46081c15766c),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0x921fa808b8445e6d),
+    ("mixed", 0x41916eda5f50f263),
 ];
 // END GOLDEN
 

@@ -382,13 +382,15 @@ impl<S: Scalar> NarrowPhase<'_, S> {
                             vn = (vb - va).dot(turned.normal);
                             contact = turned;
                         }
-                        // A path within the slop keeps the start row
-                        // (`collision::grazing_miss`).
-                        None if passes_within_slop(
-                            (&body_a.shape, body_a.position, va.scale(h)),
-                            (&body_b.shape, body_b.position, vb.scale(h)),
-                            linear_slop,
-                        ) => {}
+                        // A rope-turned path within the slop keeps the start
+                        // row (`collision::grazing_miss`).
+                        None if (rope_turn(rope_turns, a) != Vec2::ZERO
+                            || rope_turn(rope_turns, b) != Vec2::ZERO)
+                            && passes_within_slop(
+                                (&body_a.shape, body_a.position, va.scale(h)),
+                                (&body_b.shape, body_b.position, vb.scale(h)),
+                                linear_slop,
+                            ) => {}
                         None => {
                             scratch.straight_misses += 1;
                             scratch.missed.push((a, b));
