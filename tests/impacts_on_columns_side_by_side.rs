@@ -223,7 +223,14 @@ fn failures(cases: &[Case]) -> Vec<String> {
         cases.len(),
         failures.len()
     );
-    for f in failures.iter().take(40) {
+    // Forty failures are printed; every one with the ALL_FAILS environment
+    // variable set (to compare failure lists between builds).
+    let shown = if std::env::var_os("ALL_FAILS").is_some() {
+        usize::MAX
+    } else {
+        40
+    };
+    for f in failures.iter().take(shown) {
         println!("  {f}");
     }
     failures
@@ -338,21 +345,45 @@ fn other_gaps_counts_and_placements_hold_the_ball_too() {
     check(&variants(0.0));
 }
 
-/// Still open: the same variants dropped from 0.37 and 2.9 above the
-/// columns, arriving within a tick: a box ends up to 0.02 into the one
-/// below. Traced: the ball joins the group's spanning tree through the
-/// first of its rows apart (to the bottom box of the first column, not
-/// closing within the substep), leaving its row to the struck box off the
-/// exact solve; a heavy ball's catch by its speculative row is
-/// warm-started into the next substep; and 20-box columns under a ball
-/// 100x a box make a group of uneven masses above the block solver's size
-/// (its covering trees). 280 of these 2 304 throws fail (1 464 before
-/// session 13's fix, 424 before session 14's).
+/// The same variants dropped from 0.37 and 2.9 above the columns
+/// (arriving within a tick, at two phases of it), the ball of a box's
+/// mass. Before session 15's fix 128 of these 1 152 throws failed (3
+/// columns, 50 units/s): every box below the ball is within the
+/// speculative margin, and taken in index order the ball's row to the
+/// first column's bottom box (0.63 away at a slant, not closing within the
+/// substep) joined it to the group's spanning tree, leaving its row to the
+/// box it struck off the exact solve: the struck column sank 3.7e-3 into
+/// itself.
 #[test]
-#[ignore = "issue 13: a ball dropped from a height onto columns side by side; 280 of 2304 throws fail"]
+fn a_ball_of_a_boxs_mass_dropped_onto_columns_side_by_side_is_caught() {
+    let cases: Vec<Case> = [0.37, 2.9]
+        .into_iter()
+        .flat_map(variants)
+        .filter(|c| c.ratio == 1.0)
+        .collect();
+    check(&cases);
+}
+
+/// Still open: the same drops from 0.37 and 2.9 with the ball 100x a box,
+/// and every drop from 0.9 (the ball arrives just after a tick begins): a
+/// box ends up to 0.02 into the one below. Traced: the heavy ball's catch
+/// by its speculative row is warm-started into the next substep, and
+/// 20-box columns under it make a group of uneven masses above the block
+/// solver's size (its covering trees: 20-box columns with 100x top boxes
+/// too, struck by a ball of a box's mass from 0.9). 272 of these 2 304
+/// throws fail: 152 of the 1 152 heavy balls from 0.37 and 2.9, 120 of the
+/// 1 152 drops from 0.9 (304 before session 15's fix; the drops from 0.37
+/// and 2.9 with both masses: 1 464 of 2 304 failed before session 13's
+/// fix, 424 before session 14's, 280 before session 15's).
+#[test]
+#[ignore = "issue 13: a ball dropped from a height onto columns side by side; 272 of 2304 throws fail"]
 fn a_ball_dropped_from_a_height_onto_columns_side_by_side_still_open() {
-    let mut cases = variants(0.37);
-    cases.extend(variants(2.9));
+    let mut cases: Vec<Case> = [0.37, 2.9]
+        .into_iter()
+        .flat_map(variants)
+        .filter(|c| c.ratio == 100.0)
+        .collect();
+    cases.extend(variants(0.9));
     check(&cases);
 }
 
