@@ -32,10 +32,10 @@ const SEED: u64 = 2024;
 // BEGIN GOLDEN (written by regenerate_golden_replays)
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
-    ("pyramid", 0x2ac73c76b9c382a5),
+    ("pyramid", 0xa103dbe53091df39),
     ("balls", 0xbe6e46081c15766c),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0x41916eda5f50f263),
+    ("mixed", 0x399e68a8747c8995),
 ];
 // END GOLDEN
 

@@ -116,7 +116,11 @@ impl RowGroups {
     /// (0.63 away at a slant, not closing within the substep) joined it to
     /// the tree while its row to the box it struck (0.37 apart, closing
     /// at 50 units/s against a target of −22) was left off the exact
-    /// solve: the struck column sank 3.7e-3 into itself.
+    /// solve: the struck column sank 3.7e-3 into itself. The meeting rows
+    /// are taken nearest first (least separation): a ball arriving on the
+    /// seam of two columns apart meets every box below it within the
+    /// substep, and joins the tree by its rows to the two top boxes it
+    /// lands on, not by those to the bottom boxes.
     ///
     /// `implied` (one entry per contact row, the rows after the `ropes`
     /// rope rows; empty: none) marks the rows two other rows imply through
@@ -191,6 +195,20 @@ impl RowGroups {
                 self.meeting_rows.push(ri);
             }
             self.row_tier.push(t);
+        }
+        // Nearest first: the rows of one body that all meet within the
+        // substep (a ball arriving on the seam of two columns, every box
+        // below it within the margin) join it to the tree by the rows it
+        // meets first, the ones that will carry its impact. Ties in index
+        // order (a total order: deterministic without a stable sort).
+        if self.meeting_rows.len() > 1 {
+            self.meeting_rows.sort_unstable_by(|&x, &y| {
+                rows[x]
+                    .separation
+                    .partial_cmp(&rows[y].separation)
+                    .unwrap_or(core::cmp::Ordering::Equal)
+                    .then(x.cmp(&y))
+            });
         }
         self.row_rise.clear();
         self.row_rise.extend(
