@@ -23,6 +23,7 @@
 
 use crate::math::{Scalar, Vec2};
 use crate::solver::row::ContactConstraint;
+use crate::solver::sparse_solve::SparseScratch;
 
 /// Largest group solved directly.
 pub(crate) const MAX_BLOCK: usize = 64;
@@ -31,7 +32,7 @@ const ROUNDS: usize = 4;
 
 /// `A_ij` for rows `p` and `q` along directions `dp` and `dq` (each row's
 /// normal, or for a rope's sideways row its normal turned a quarter).
-fn coupling<S: Scalar>(
+pub(crate) fn coupling<S: Scalar>(
     (p, dp): (&ContactConstraint<S>, Vec2<S>),
     (q, dq): (&ContactConstraint<S>, Vec2<S>),
 ) -> S {
@@ -111,7 +112,11 @@ fn solve_ldlt<S: Scalar>(a: &mut [S], e: &mut [S], m: usize) {
     }
 }
 
-fn apply_impulse<S: Scalar>(row: &ContactConstraint<S>, amount: S, target: &mut [Vec2<S>]) {
+pub(crate) fn apply_impulse<S: Scalar>(
+    row: &ContactConstraint<S>,
+    amount: S,
+    target: &mut [Vec2<S>],
+) {
     let push = row.normal.scale(amount);
     if row.inverse_mass_a.is_positive() {
         target[row.a as usize] -= push.scale(row.inverse_mass_a);
@@ -135,6 +140,8 @@ pub(crate) struct BlockScratch<S: Scalar> {
     /// (by row index) since the rope settling rounds began; empty outside
     /// them (as the tree solve's `TreeScratch::applied`).
     pub(crate) applied: Vec<S>,
+    /// Working memory of the sparse solve of large uneven groups.
+    pub(crate) sparse: SparseScratch<S>,
 }
 
 impl<S: Scalar> BlockScratch<S> {
@@ -317,7 +324,7 @@ pub(crate) fn solve_group_velocities<S: Scalar>(
 /// 300 kept its rows unsolved in every sweep, gravity piled up in its
 /// velocities (3 units/s) while the position pass alone held it, and it
 /// never slept.
-fn sequential_remainder<S: Scalar>(
+pub(crate) fn sequential_remainder<S: Scalar>(
     rows: &mut [ContactConstraint<S>],
     group: &[usize],
     velocities: &mut [Vec2<S>],

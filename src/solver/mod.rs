@@ -13,6 +13,7 @@ pub(crate) mod rebound_partners;
 pub(crate) mod restitution;
 pub(crate) mod row;
 pub(crate) mod row_groups;
+pub(crate) mod sparse_solve;
 mod step_context;
 pub(crate) mod tree_plan;
 pub(crate) mod tree_solve;

@@ -84,6 +84,7 @@
 use super::block_solve::{BlockScratch, MAX_BLOCK, solve_group_velocities};
 use super::row::{ContactConstraint, solve_normal_row};
 use super::row_groups::{GroupSolve, RowGroups};
+use super::sparse_solve::solve_sparse_velocities;
 use super::tree_solve::{TreeScratch, solve_tree_velocities};
 use crate::math::{Scalar, Vec2, WideScalar};
 
@@ -572,8 +573,15 @@ fn solve_bounce_groups<S: Scalar>(
         // sweep through a crate on the ground (its reaction bounces between
         // the two rows), and the bounce must be exact.
         match solve {
-            GroupSolve::Sequential | GroupSolve::Block
-                if scratch.participants.len() <= MAX_BLOCK =>
+            // (Contact groups of up to `MAX_BLOCK` rows took the block
+            // solve before the sparse solve replaced it: their bounces
+            // keep it.)
+            _ if scratch.participants.len() <= MAX_BLOCK
+                && match solve {
+                    GroupSolve::Sequential | GroupSolve::Block => true,
+                    GroupSolve::Sparse(_) => group.len() <= MAX_BLOCK,
+                    _ => false,
+                } =>
             {
                 // The block solve regularises its diagonal by 2⁻¹⁶; sweeps
                 // of sequential impulses from its answer take that error
@@ -593,7 +601,7 @@ fn solve_bounce_groups<S: Scalar>(
                     }
                 }
             }
-            GroupSolve::Tree(_) | GroupSolve::Trees(_) => {
+            GroupSolve::Tree(_) | GroupSolve::Trees(_) | GroupSolve::Sparse(_) => {
                 // The tree solves take the whole group: every movable body
                 // of it is watched for a change.
                 for &ri in group {
@@ -630,6 +638,13 @@ fn solve_bounce_groups<S: Scalar>(
                                 );
                             }
                         }
+                        GroupSolve::Sparse(range) => solve_sparse_velocities(
+                            rows,
+                            group,
+                            groups.sparse(range),
+                            velocities,
+                            &mut block.sparse,
+                        ),
                         _ => {}
                     }
                 }

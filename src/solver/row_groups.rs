@@ -9,6 +9,7 @@ use crate::math::{Scalar, Vec2};
 use crate::solver::block_solve::MAX_BLOCK;
 use crate::solver::forest_cover::{ForestCover, MAX_TREES};
 use crate::solver::row::ContactConstraint;
+use crate::solver::sparse_solve::{SparsePlanner, plan_sparse};
 use crate::solver::tree_plan::{TreePlanner, TreeRow, plan_tree};
 use crate::solver::tree_solve::MAX_LOOP_ROWS;
 
@@ -28,6 +29,10 @@ pub(crate) enum GroupSolve {
     /// [`RowGroups::plan`], listed at this range of
     /// [`RowGroups::trees`].
     Trees(Range<usize>),
+    /// The exact sparse solve ([`crate::solver::sparse_solve`]) with the
+    /// elimination order and profiles at this range of
+    /// [`RowGroups::sparse`].
+    Sparse(Range<usize>),
 }
 
 /// Groups of row indices, each sorted ascending, in the order of their first
@@ -51,6 +56,14 @@ pub(crate) struct RowGroups {
     cover: ForestCover,
     /// Working memory of the tree planner.
     planner: TreePlanner,
+    /// The sparse solve's elimination orders (group positions), one
+    /// group after another.
+    sparse_order: Vec<u32>,
+    /// Per elimination index of [`sparse_order`](Self::sparse_order): the
+    /// first column of its profile.
+    sparse_first: Vec<u32>,
+    /// Working memory of the sparse planner.
+    sparse_planner: SparsePlanner,
     /// Group of each row while grouping (working memory).
     row_group: Vec<u32>,
     /// Group number of each union-find root while grouping (working memory).
@@ -442,6 +455,8 @@ impl RowGroups {
         self.modes.clear();
         self.plans.clear();
         self.trees.clear();
+        self.sparse_order.clear();
+        self.sparse_first.clear();
         self.cover.reset(rows.len(), slot_count);
         // The groups' row lists, out of `self` while the planners borrow it.
         let grouped = core::mem::take(&mut self.rows);
@@ -483,8 +498,21 @@ impl RowGroups {
                 // Contacts only: rope loops keep their one spanning tree
                 // (the rope solves carry sideways rows the covering was
                 // not measured with).
-                if cyclic && direct && !block && !always_direct {
-                    self.plan_trees(rows, group, slot_count)
+                if cyclic && direct && !always_direct {
+                    let at = self.sparse_order.len();
+                    if plan_sparse(
+                        rows,
+                        group,
+                        &mut self.sparse_planner,
+                        &mut self.sparse_order,
+                        &mut self.sparse_first,
+                    ) {
+                        GroupSolve::Sparse(at..self.sparse_order.len())
+                    } else if block {
+                        GroupSolve::Block
+                    } else {
+                        self.plan_trees(rows, group, slot_count)
+                    }
                 } else if wanted
                     && (!cyclic || direct || affordable)
                     && !block
@@ -532,6 +560,15 @@ impl RowGroups {
     /// The tree plan rows of a [`GroupSolve::Tree`] range.
     pub(crate) fn plan(&self, range: &Range<usize>) -> &[TreeRow] {
         &self.plans[range.clone()]
+    }
+
+    /// The elimination order and profile starts of a
+    /// [`GroupSolve::Sparse`] range.
+    pub(crate) fn sparse(&self, range: &Range<usize>) -> (&[u32], &[u32]) {
+        (
+            &self.sparse_order[range.clone()],
+            &self.sparse_first[range.clone()],
+        )
     }
 
     /// The plan ranges of a [`GroupSolve::Trees`] range.

@@ -74,7 +74,9 @@ impl<S: Scalar> World<S> {
             && context
                 .contact_groups
                 .iter_classified()
-                .any(|(_, velocity, _)| matches!(velocity, GroupSolve::Trees(_)));
+                .any(|(_, velocity, _)| {
+                    matches!(velocity, GroupSolve::Trees(_) | GroupSolve::Sparse(_))
+                });
         if any {
             context
                 .velocities_before_solve
@@ -102,7 +104,7 @@ impl<S: Scalar> World<S> {
         energy_marks.resize(velocities.len(), u32::MAX);
         let slots = &self.slots;
         for (g, (group, velocity, _)) in contact_groups.iter_classified().enumerate() {
-            if !matches!(velocity, GroupSolve::Trees(_)) {
+            if !matches!(velocity, GroupSolve::Trees(_) | GroupSolve::Sparse(_)) {
                 continue;
             }
             let stamp = u32::try_from(g).unwrap_or(u32::MAX - 1);

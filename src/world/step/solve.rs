@@ -11,6 +11,7 @@ use crate::solver::row::{
     ContactConstraint, solve_friction_row, solve_position_row, solve_velocity_row, warm_start,
 };
 use crate::solver::row_groups::{GroupSolve, RowGroups};
+use crate::solver::sparse_solve::{solve_sparse_positions, solve_sparse_velocities};
 use crate::solver::tree_solve::{
     SideRows, TreeScratch, solve_tree_positions, solve_tree_velocities,
 };
@@ -510,6 +511,20 @@ fn solve_group_list_velocities<S: Scalar>(
                 solve_group_velocities(rows, group, velocities, None, block);
                 continue;
             }
+            GroupSolve::Sparse(range) => {
+                // Friction first, as for the block solve above.
+                for &ri in group {
+                    solve_friction_row(&mut rows[ri], velocities);
+                }
+                solve_sparse_velocities(
+                    rows,
+                    group,
+                    groups.sparse(range),
+                    velocities,
+                    &mut block.sparse,
+                );
+                continue;
+            }
             GroupSolve::Block => {
                 let side = side.as_mut().map(|sr| (sr.stiffness, &mut *sr.accumulated));
                 solve_group_velocities(rows, group, velocities, side, block);
@@ -622,6 +637,14 @@ fn solve_group_list_positions<S: Scalar>(
                     block,
                 );
             }
+            GroupSolve::Sparse(range) => solve_sparse_positions(
+                rows,
+                group,
+                groups.sparse(range),
+                displacements,
+                (slop, beta, max),
+                &mut block.sparse,
+            ),
             GroupSolve::Tree(range) => solve_tree_positions(
                 rows,
                 group,

@@ -1,0 +1,655 @@
+//! An exact solve for large contact groups of uneven masses: a sparse
+//! `L·D·Lᵀ` of the group's effective-mass matrix in a fill-reducing order,
+//! inside the block solver's active-set loop.
+//!
+//! # Why
+//!
+//! A cyclic contact group of uneven masses (a pile of light balls under
+//! heavy ones) needs its normal rows solved together: sequential impulses
+//! move the light bodies instead of the heavy ones and converge at about
+//! `w_heavy/w_light` per sweep. Up to [`MAX_BLOCK`](super::block_solve::MAX_BLOCK)
+//! rows the dense block solve does that (`O(r³)`). Above, the group was
+//! solved on a few covering spanning trees one after another
+//! ([`crate::solver::forest_cover`]), a block Gauss–Seidel that does not
+//! converge at 1000:1: the velocity problem of a statically indeterminate
+//! pile (an 8-row pile of balls: 94 rows, 72 velocity unknowns) is so ill
+//! conditioned that projected Gauss–Seidel in f64 still left 0.002 units/s
+//! after 16 384 sweeps, and such piles collapsed (thousands of times their
+//! slop bound).
+//!
+//! # How
+//!
+//! With rows `i` (`J_i v = (v_b − v_a)·n_i`), `A = J·M⁻¹·Jᵀ` has
+//! `A_ij ≠ 0` only when rows `i` and `j` share a movable body
+//! ([`coupling`]): the row graph of a pile is a band a few rows of the
+//! pile wide. The rows are put in reverse Cuthill–McKee order (a
+//! breadth-first numbering from a peripheral row, neighbours by rising
+//! degree, reversed), which keeps every row's nonzeros within a short
+//! *profile* before the diagonal; `L·D·Lᵀ` fills only inside the profile
+//! (George & Liu), so the factor is stored row by row from each row's
+//! first nonzero (an envelope) and costs `Σ pᵢ²` for profile lengths `pᵢ`
+//! (about `r·b²` for a band `b` wide), not `r³`.
+//!
+//! Fixed point. `A`'s diagonal spans the mass ratio (`w_a + w_b`: 2.5 for
+//! two light balls of radius 0.5, 2.5e-3 for two ×1000 ones), and an
+//! I32F32 ulp (2.3e-10) is then a coarse step of a heavy row's pivot: the
+//! dense solve in place of the covering trees blew up on a ×1000 pile in
+//! session 11. So the matrix is scaled to a unit diagonal first,
+//! `Â = S·A·S` with `S = diag(√m_eff)` (`m_eff = 1/A_ii`), whose entries
+//! are the cosines of the rows in the mass metric (`|Â_ij| ≤ 1`); the
+//! solve is `Â·y = S·e`, `x = S·y`. A regularisation `ε = 2⁻¹⁶` on `Â`'s
+//! diagonal keeps the factor defined for dependent rows (a statically
+//! indeterminate pile has more rows than its bodies' degrees of freedom):
+//! every pivot is then at least `ε` (≈ 6.6e4 ulps), and `|L_ij| ≤
+//! 1/√ε = 256`. The products of the factor and the substitutions are
+//! summed exactly in the wide type and rounded once.
+//!
+//! What the regularisation costs: the solve returns `(Â + ε)⁻¹·ê`, short
+//! of an independent row's target by about `ε/(λ_min + ε)` of it. Every
+//! sweep solves again from the velocities the last one left (the target
+//! minus the velocity actually reached), so the shortfall shrinks by that
+//! factor per sweep (iterative refinement), and the warm start carries it
+//! across substeps; the dependent directions carry no velocity error.
+//!
+//! The unilateral rows (contacts push, `λ ≥ 0`) take an active-set loop:
+//! rows carrying impulse or short of their target start active; in each
+//! round, when some active row's accumulated impulse would turn negative,
+//! all such rows are released (zeroed) and the rest solved again;
+//! otherwise the solution is applied, and the inactive rows it left short
+//! of their target join the set for another round. At most [`ROUNDS`]
+//! rounds; the rows the last applied solution did not hold take one
+//! sequential impulse each ([`sequential_remainder`]). The block solve's
+//! loop (releases only, 4 rounds) left rows that the solution drove into
+//! their neighbours inactive, and the pile collapsed; with the rows joining
+//! again, 16 rounds left the first substep of some ×10 000 piles (no warm
+//! start yet) unsolved, 32 solve them. A primal loop (a partial step to
+//! the first row reaching zero) and block principal pivoting (Júdice and
+//! Pires, with Murty's single exchanges) needed hundreds of rounds on the
+//! first substep of a 12-row pile. Friction is taken by the caller before
+//! the normal solve, as for the block solve (`world::step::solve`), so each
+//! sweep ends with the normal rows exact.
+//!
+//! The factor depends only on the scaled matrix and which rows are active:
+//! the sweeps of a substep whose active set did not change reuse it when
+//! the matrix is bit for bit the one it was factored from (derived data: a
+//! restored world recomputes it bit for bit).
+//!
+//! Cost bound: a group over [`MAX_SPARSE_ROWS`] rows, or whose profile
+//! work `Σ pᵢ²` exceeds [`MAX_SPARSE_WORK`], is not planned here; it keeps
+//! the covering trees ([`crate::solver::row_groups::RowGroups::classify`]).
+
+use crate::math::{Scalar, Vec2, WideScalar};
+use crate::solver::block_solve::{apply_impulse, coupling, sequential_remainder};
+use crate::solver::row::ContactConstraint;
+
+/// Largest profile work `Σ pᵢ²` (about the multiply-adds of one
+/// factorisation) planned for one group: 4.2e6, a band of about 90 rows
+/// over 500 rows.
+pub(crate) const MAX_SPARSE_WORK: usize = 1 << 22;
+/// Largest group planned here (rows). A 12-row pile of balls has 212.
+/// Crowds of bodies in motion (a closed box of 200 bodies at g 100, every
+/// tenth ×1000: 500–930 rows, profile work up to 1.7e6) took the solve
+/// first: every active-set round a refactorisation, rounds running out
+/// while contacts came and went, and the crowd ended 0.33 deep in itself
+/// (0.005–0.034 on the covering trees); they keep the covering trees.
+pub(crate) const MAX_SPARSE_ROWS: usize = 256;
+/// Active-set rounds per solve.
+const ROUNDS: usize = 32;
+
+/// Working memory of [`plan_sparse`].
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SparsePlanner {
+    /// `(body slot, group position)` of every movable end.
+    ends: Vec<(u32, u32)>,
+    /// Neighbour pairs `(p, q)` (rows sharing a movable body), then CSR.
+    pairs: Vec<(u32, u32)>,
+    /// CSR start of each position's neighbours (length `n + 1`).
+    start: Vec<u32>,
+    /// CSR neighbours, each list sorted by (degree, position).
+    neighbours: Vec<u32>,
+    /// Per position: visited by the breadth-first search.
+    visited: Vec<bool>,
+    /// Breadth-first order.
+    queue: Vec<u32>,
+    /// Per position: its index in the elimination order.
+    index_of: Vec<u32>,
+}
+
+impl SparsePlanner {
+    fn degree(&self, p: u32) -> u32 {
+        self.start[p as usize + 1] - self.start[p as usize]
+    }
+
+    /// Breadth-first numbering from `root` (appended to `queue`; neighbours
+    /// in their sorted order); returns where the last level starts.
+    fn breadth_first(&mut self, root: u32) -> usize {
+        let mut head = self.queue.len();
+        self.visited[root as usize] = true;
+        self.queue.push(root);
+        let mut level_start = head;
+        let mut level_end = self.queue.len();
+        while head < self.queue.len() {
+            if head == level_end {
+                level_start = level_end;
+                level_end = self.queue.len();
+            }
+            let p = self.queue[head] as usize;
+            head += 1;
+            for k in self.start[p]..self.start[p + 1] {
+                let q = self.neighbours[k as usize];
+                if !self.visited[q as usize] {
+                    self.visited[q as usize] = true;
+                    self.queue.push(q);
+                }
+            }
+        }
+        level_start
+    }
+}
+
+/// Plans the sparse solve of `group` (rows sharing movable bodies): its
+/// positions in reverse Cuthill–McKee order appended to `order`, and per
+/// elimination index the first column of its profile appended to `first`.
+/// `false` (nothing appended) for a group over [`MAX_SPARSE_ROWS`] rows or
+/// whose profile work exceeds [`MAX_SPARSE_WORK`].
+pub(crate) fn plan_sparse<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    group: &[usize],
+    planner: &mut SparsePlanner,
+    order: &mut Vec<u32>,
+    first: &mut Vec<u32>,
+) -> bool {
+    let n = group.len();
+    let Ok(n32) = u32::try_from(n) else {
+        return false;
+    };
+    if n > MAX_SPARSE_ROWS {
+        return false;
+    }
+    planner.ends.clear();
+    for (p, &ri) in (0..n32).zip(group) {
+        let row = &rows[ri];
+        if row.inverse_mass_a.is_positive() {
+            planner.ends.push((row.a, p));
+        }
+        if row.inverse_mass_b.is_positive() {
+            planner.ends.push((row.b, p));
+        }
+    }
+    planner.ends.sort_unstable();
+    // Rows sharing a body are neighbours.
+    planner.pairs.clear();
+    let mut i = 0;
+    while i < planner.ends.len() {
+        let slot = planner.ends[i].0;
+        let mut j = i;
+        while j < planner.ends.len() && planner.ends[j].0 == slot {
+            j += 1;
+        }
+        for a in i..j {
+            for b in i..j {
+                let (p, q) = (planner.ends[a].1, planner.ends[b].1);
+                if p != q {
+                    planner.pairs.push((p, q));
+                }
+            }
+        }
+        i = j;
+    }
+    planner.pairs.sort_unstable();
+    planner.pairs.dedup();
+    planner.start.clear();
+    planner.start.resize(n + 1, 0);
+    for &(p, _) in &planner.pairs {
+        planner.start[p as usize + 1] += 1;
+    }
+    for p in 0..n {
+        planner.start[p + 1] += planner.start[p];
+    }
+    planner.neighbours.clear();
+    planner
+        .neighbours
+        .extend(planner.pairs.iter().map(|&(_, q)| q));
+    // Neighbours by rising degree, then position (Cuthill–McKee).
+    let mut neighbours = core::mem::take(&mut planner.neighbours);
+    for p in 0..n {
+        let (s, e) = (planner.start[p] as usize, planner.start[p + 1] as usize);
+        neighbours[s..e].sort_unstable_by_key(|&q| (planner.degree(q), q));
+    }
+    planner.neighbours = neighbours;
+    // A peripheral root: from the row of least degree, the row of least
+    // degree in the last level of its breadth-first search (one step of
+    // George and Liu's search).
+    planner.queue.clear();
+    planner.visited.clear();
+    planner.visited.resize(n, false);
+    let mut rest = 0u32;
+    while (rest as usize) < n {
+        // The next unvisited component (a group is connected; kept general).
+        let seed = (rest..n32)
+            .filter(|&p| !planner.visited[p as usize])
+            .min_by_key(|&p| (planner.degree(p), p));
+        let Some(seed) = seed else { break };
+        let mark = planner.queue.len();
+        let last = planner.breadth_first(seed);
+        let root = planner.queue[last..]
+            .iter()
+            .copied()
+            .min_by_key(|&p| (planner.degree(p), p))
+            .unwrap_or(seed);
+        for k in mark..planner.queue.len() {
+            let p = planner.queue[k] as usize;
+            planner.visited[p] = false;
+        }
+        planner.queue.truncate(mark);
+        planner.breadth_first(root);
+        while (rest as usize) < n && planner.visited[rest as usize] {
+            rest += 1;
+        }
+    }
+    // Reverse Cuthill–McKee.
+    planner.queue.reverse();
+    planner.index_of.clear();
+    planner.index_of.resize(n, 0);
+    for (k, &p) in (0..n32).zip(&planner.queue) {
+        planner.index_of[p as usize] = k;
+    }
+    let base = first.len();
+    let mut work = 0usize;
+    for (k, &p) in (0..n32).zip(&planner.queue) {
+        let (s, e) = (
+            planner.start[p as usize] as usize,
+            planner.start[p as usize + 1] as usize,
+        );
+        let f = planner.neighbours[s..e]
+            .iter()
+            .map(|&q| planner.index_of[q as usize])
+            .min()
+            .unwrap_or(k)
+            .min(k);
+        let profile = (k - f + 1) as usize;
+        work = work.saturating_add(profile * profile);
+        first.push(f);
+    }
+    if work > MAX_SPARSE_WORK {
+        first.truncate(base);
+        return false;
+    }
+    order.extend_from_slice(&planner.queue);
+    true
+}
+
+/// Working memory of the sparse solve, and its last factor.
+#[derive(Clone, Debug)]
+pub(crate) struct SparseScratch<S: Scalar> {
+    /// Start of each elimination index's row in the envelope (`n + 1`).
+    offset: Vec<usize>,
+    /// `√m_eff` per elimination index.
+    scale: Vec<S>,
+    /// Per elimination index: in the active set.
+    active: Vec<bool>,
+    /// The scaled matrix of the active rows, row by row over each profile
+    /// (diagonal last).
+    matrix: Vec<S>,
+    /// The matrix and profile the factor below was computed from.
+    source: Vec<S>,
+    source_first: Vec<u32>,
+    /// `L` (strictly lower, over each profile) and `D` (diagonal slots).
+    factor: Vec<S>,
+    /// One row's `L_kj·D_j` while factoring.
+    temp: Vec<S>,
+    /// Right-hand side, then solution (scaled).
+    rhs: Vec<S>,
+    /// Wide accumulators of the back substitution.
+    acc: Vec<S::Wide>,
+    /// The active rows' indices, ascending (for the sequential remainder).
+    active_rows: Vec<usize>,
+    /// Per elimination index: solved by the last solution applied.
+    solved: Vec<bool>,
+    /// Rows released since then, with their impulses.
+    released: Vec<(usize, S)>,
+}
+
+impl<S: Scalar> Default for SparseScratch<S> {
+    fn default() -> Self {
+        SparseScratch {
+            offset: Vec::new(),
+            scale: Vec::new(),
+            active: Vec::new(),
+            matrix: Vec::new(),
+            source: Vec::new(),
+            source_first: Vec::new(),
+            factor: Vec::new(),
+            temp: Vec::new(),
+            rhs: Vec::new(),
+            acc: Vec::new(),
+            active_rows: Vec::new(),
+            solved: Vec::new(),
+            released: Vec::new(),
+        }
+    }
+}
+
+impl<S: Scalar> SparseScratch<S> {
+    /// Offsets and scales for a group in this order.
+    fn prepare(
+        &mut self,
+        rows: &[ContactConstraint<S>],
+        group: &[usize],
+        order: &[u32],
+        first: &[u32],
+    ) {
+        let n = order.len();
+        self.offset.clear();
+        let mut at = 0;
+        for (k, &f) in first.iter().enumerate() {
+            self.offset.push(at);
+            at += k - f as usize + 1;
+        }
+        self.offset.push(at);
+        self.scale.clear();
+        self.scale.extend(
+            order
+                .iter()
+                .map(|&p| rows[group[p as usize]].effective_mass.sqrt()),
+        );
+        self.active.clear();
+        self.active.resize(n, false);
+    }
+
+    /// Builds `Â` over the active rows (inactive rows: unit diagonal, no
+    /// coupling), and factors it unless it is the matrix factored last.
+    /// (Index loops: each reads several arrays at shifted offsets.)
+    #[allow(clippy::needless_range_loop)]
+    fn build_and_factor(
+        &mut self,
+        rows: &[ContactConstraint<S>],
+        group: &[usize],
+        order: &[u32],
+        first: &[u32],
+    ) {
+        let n = order.len();
+        let epsilon = S::from_ratio(1, 65_536);
+        self.matrix.clear();
+        self.matrix.resize(self.offset[n], S::ZERO);
+        for k in 0..n {
+            let o = self.offset[k];
+            let f = first[k] as usize;
+            if !self.active[k] {
+                self.matrix[o + k - f] = S::ONE;
+                continue;
+            }
+            let rk = &rows[group[order[k] as usize]];
+            let sk = self.scale[k];
+            for j in f..k {
+                if !self.active[j] {
+                    continue;
+                }
+                let rj = &rows[group[order[j] as usize]];
+                let a = coupling((rk, rk.normal), (rj, rj.normal));
+                if a != S::ZERO {
+                    self.matrix[o + j - f] = a.mul(sk).mul(self.scale[j]);
+                }
+            }
+            let d = coupling((rk, rk.normal), (rk, rk.normal));
+            self.matrix[o + k - f] = d.mul(sk).mul(sk).add(epsilon);
+        }
+        if self.source == self.matrix && self.source_first == first {
+            return;
+        }
+        self.factor.clear();
+        self.factor.resize(self.offset[n], S::ZERO);
+        for k in 0..n {
+            let o = self.offset[k];
+            let fk = first[k] as usize;
+            self.temp.clear();
+            // t_j = A_kj − Σ_p t_p·L_jp over the profiles' overlap.
+            for j in fk..k {
+                let fj = first[j] as usize;
+                let oj = self.offset[j];
+                let mut s = S::Wide::from_narrow(self.matrix[o + j - fk]);
+                for p in fk.max(fj)..j {
+                    s = s.sub(self.temp[p - fk].wide_mul(self.factor[oj + p - fj]));
+                }
+                self.temp.push(s.narrow());
+            }
+            // L_kj = t_j / D_j, D_k = A_kk − Σ_j t_j·L_kj.
+            let mut d = S::Wide::from_narrow(self.matrix[o + k - fk]);
+            for j in fk..k {
+                let t = self.temp[j - fk];
+                if t == S::ZERO {
+                    continue;
+                }
+                let dj = self.factor[self.offset[j] + j - first[j] as usize];
+                let l = t.div(dj);
+                d = d.sub(t.wide_mul(l));
+                self.factor[o + j - fk] = l;
+            }
+            // Rounding can take a pivot of the regularised matrix (≥ ε)
+            // only slightly lower; half of ε keeps the division defined
+            // and `L` bounded.
+            self.factor[o + k - fk] = d.narrow().max(epsilon.half());
+        }
+        core::mem::swap(&mut self.source, &mut self.matrix);
+        self.source_first.clear();
+        self.source_first.extend_from_slice(first);
+    }
+
+    /// Solves `L·D·Lᵀ·y = rhs` in place (`rhs` becomes `y`).
+    #[allow(clippy::needless_range_loop)]
+    fn substitute(&mut self, first: &[u32]) {
+        let n = self.rhs.len();
+        for k in 0..n {
+            let o = self.offset[k];
+            let f = first[k] as usize;
+            let mut s = S::Wide::from_narrow(self.rhs[k]);
+            for j in f..k {
+                s = s.sub(self.factor[o + j - f].wide_mul(self.rhs[j]));
+            }
+            self.rhs[k] = s.narrow();
+        }
+        for k in 0..n {
+            let f = first[k] as usize;
+            self.rhs[k] = self.rhs[k].div(self.factor[self.offset[k] + k - f]);
+        }
+        self.acc.clear();
+        self.acc
+            .extend(self.rhs.iter().map(|&v| S::Wide::from_narrow(v)));
+        for k in (0..n).rev() {
+            let x = self.acc[k].narrow();
+            self.rhs[k] = x;
+            if x == S::ZERO {
+                continue;
+            }
+            let o = self.offset[k];
+            let f = first[k] as usize;
+            for j in f..k {
+                let l = self.factor[o + j - f];
+                self.acc[j] = self.acc[j].sub(l.wide_mul(x));
+            }
+        }
+    }
+
+    /// One exact solve over the active rows: `Â·y = S·e` with `e_k =
+    /// rhs(row)` for active rows (0 for the others), `x = S·y` left in
+    /// `self.rhs` (elimination order). `false` when no row is active.
+    fn solve_active(
+        &mut self,
+        rows: &[ContactConstraint<S>],
+        group: &[usize],
+        order: &[u32],
+        first: &[u32],
+        mut rhs: impl FnMut(&ContactConstraint<S>) -> S,
+    ) -> bool {
+        if !self.active.iter().any(|&a| a) {
+            return false;
+        }
+        self.build_and_factor(rows, group, order, first);
+        self.rhs.clear();
+        for (k, &p) in order.iter().enumerate() {
+            let e = if self.active[k] {
+                rhs(&rows[group[p as usize]]).mul(self.scale[k])
+            } else {
+                S::ZERO
+            };
+            self.rhs.push(e);
+        }
+        self.substitute(first);
+        for (x, &s) in self.rhs.iter_mut().zip(&self.scale) {
+            *x = x.mul(s);
+        }
+        true
+    }
+}
+
+/// One exact velocity solve of a contact `group` planned by
+/// [`plan_sparse`] (`order`, `first`), friction left to the caller.
+pub(crate) fn solve_sparse_velocities<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    group: &[usize],
+    (order, first): (&[u32], &[u32]),
+    velocities: &mut [Vec2<S>],
+    work: &mut SparseScratch<S>,
+) {
+    work.prepare(rows, group, order, first);
+    let normal_velocity = |row: &ContactConstraint<S>, v: &[Vec2<S>]| {
+        (v[row.b as usize] - v[row.a as usize]).dot(row.normal)
+    };
+    // Rows carrying impulse or short of their target start active (as in
+    // the block solve).
+    for (k, &p) in order.iter().enumerate() {
+        let row = &rows[group[p as usize]];
+        work.active[k] = row.normal_impulse.is_positive()
+            || !row.separation.is_positive()
+            || normal_velocity(row, velocities) < row.target_velocity;
+    }
+    // Rows short of their target by more than this after a solution join
+    // the active set (rounding leaves rows within it).
+    let tolerance = S::from_ratio(1, 1 << 20);
+    // Whether a solution was applied, and which rows it solved.
+    let mut applied = false;
+    // The releases since the last solution applied (row, impulse), undone
+    // when the rounds run out before another is: a release alone leaves
+    // the bodies its row held unsupported.
+    work.released.clear();
+    let mut finished = false;
+    for _ in 0..ROUNDS {
+        let solved = work.solve_active(rows, group, order, first, |row| {
+            row.target_velocity.sub(normal_velocity(row, velocities))
+        });
+        if !solved {
+            finished = true;
+            break;
+        }
+        // Rows that would pull leave the set (their impulse zeroed), and
+        // the rest is solved again.
+        let mut released = false;
+        for (k, &p) in order.iter().enumerate() {
+            let ri = group[p as usize];
+            if work.active[k] && rows[ri].normal_impulse.add(work.rhs[k]).is_negative() {
+                released = true;
+                work.active[k] = false;
+                let old = rows[ri].normal_impulse;
+                work.released.push((ri, old));
+                rows[ri].normal_impulse = S::ZERO;
+                let row = rows[ri];
+                apply_impulse(&row, old.neg(), velocities);
+            }
+        }
+        if released {
+            continue;
+        }
+        for (k, &p) in order.iter().enumerate() {
+            if !work.active[k] {
+                continue;
+            }
+            let ri = group[p as usize];
+            let x = work.rhs[k];
+            rows[ri].normal_impulse = rows[ri].normal_impulse.add(x);
+            let row = rows[ri];
+            apply_impulse(&row, x, velocities);
+        }
+        applied = true;
+        work.released.clear();
+        work.solved.clear();
+        work.solved.extend_from_slice(&work.active);
+        // Rows the solution left short join the set for the next round.
+        let mut joined = false;
+        for (k, &p) in order.iter().enumerate() {
+            let row = &rows[group[p as usize]];
+            if !work.active[k]
+                && row.target_velocity.sub(normal_velocity(row, velocities)) > tolerance
+            {
+                work.active[k] = true;
+                joined = true;
+            }
+        }
+        if !joined {
+            finished = true;
+            break;
+        }
+    }
+    if !finished {
+        for &(ri, old) in work.released.iter().rev() {
+            rows[ri].normal_impulse = old;
+            let row = rows[ri];
+            apply_impulse(&row, old, velocities);
+        }
+    }
+    work.active_rows.clear();
+    for (k, &p) in order.iter().enumerate() {
+        if applied && work.solved[k] {
+            work.active_rows.push(group[p as usize]);
+        }
+    }
+    work.active_rows.sort_unstable();
+    sequential_remainder(rows, group, velocities, applied, &work.active_rows, 0);
+}
+
+/// One exact position-correction solve of a contact `group` planned by
+/// [`plan_sparse`]: rows stretched beyond the slop are pulled back by the
+/// fraction `beta`, at most `max_correction`, as the block solve's
+/// position pass does.
+pub(crate) fn solve_sparse_positions<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    group: &[usize],
+    (order, first): (&[u32], &[u32]),
+    displacements: &mut [Vec2<S>],
+    (slop, beta, max_correction): (S, S, S),
+    work: &mut SparseScratch<S>,
+) {
+    work.prepare(rows, group, order, first);
+    let correction_of = |row: &ContactConstraint<S>, d: &[Vec2<S>]| {
+        let separation = row
+            .separation
+            .add((d[row.b as usize] - d[row.a as usize]).dot(row.normal));
+        beta.mul(separation.add(slop))
+            .clamp(max_correction.neg(), S::ZERO)
+    };
+    for (k, &p) in order.iter().enumerate() {
+        work.active[k] = correction_of(&rows[group[p as usize]], displacements).is_negative();
+    }
+    for _ in 0..ROUNDS {
+        let solved = work.solve_active(rows, group, order, first, |row| {
+            correction_of(row, displacements).neg()
+        });
+        if !solved {
+            return;
+        }
+        let mut dropped = false;
+        for k in 0..order.len() {
+            if work.active[k] && work.rhs[k].is_negative() {
+                work.active[k] = false;
+                dropped = true;
+            }
+        }
+        if !dropped {
+            for (k, &p) in order.iter().enumerate() {
+                if work.active[k] {
+                    apply_impulse(&rows[group[p as usize]], work.rhs[k], displacements);
+                }
+            }
+            return;
+        }
+    }
+}
