@@ -35,7 +35,7 @@ const GOLDEN: &[(&str, u64)] = &[
     ("pyramid", 0xa103dbe53091df39),
     ("balls", 0xbe6e46081c15766c),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0x399e68a8747c8995),
+    ("mixed", 0x87eb60a834e4376e),
 ];
 // END GOLDEN
 

@@ -45,18 +45,28 @@
 //! summed exactly in the wide type and rounded once.
 //!
 //! What the regularisation costs: the solve returns `(Â + ε)⁻¹·ê`, short
-//! of an independent row's target by about `ε/(λ_min + ε)` of it. Every
-//! sweep solves again from the velocities the last one left (the target
-//! minus the velocity actually reached), so the shortfall shrinks by that
-//! factor per sweep (iterative refinement), and the warm start carries it
-//! across substeps; the dependent directions carry no velocity error.
+//! of an independent row's target by about `ε/(λ + ε)` of it along an
+//! eigenvector of `Â` with eigenvalue `λ`; the dependent directions carry
+//! no velocity error. `λ` is not always large beside `ε`: two columns of
+//! ten light circles side by side, a ball 100× a circle arriving on one at
+//! 50 units/s, were left 3 % short (the ball stopped only to 1.7 units/s
+//! by the first solve: `λ ≈ 30 ε`). So each solve is refined: once the
+//! active set holds, the rounds solve again for what the active rows
+//! still lack (the target minus the velocity reached), with the same
+//! factor, which shrinks the shortfall by `ε/(λ + ε)` per round, while
+//! its largest value keeps halving. Without it the velocity sweeps left
+//! 0.027 units/s in the columns and the bounce pass (two solves) launched
+//! the ball at 49.955 instead of 50: a column left moving is not at rest
+//! for the classification of the next step, which gave it sequential
+//! impulses, and those could not take back the catch's warm-started
+//! impulses after the ball had gone (a circle left at 858 units/s).
 //!
 //! The unilateral rows (contacts push, `λ ≥ 0`) take an active-set loop:
 //! rows carrying impulse or short of their target start active; in each
 //! round, when some active row's accumulated impulse would turn negative,
 //! all such rows are released (zeroed) and the rest solved again;
 //! otherwise the solution is applied, and the inactive rows it left short
-//! of their target join the set for another round. At most [`ROUNDS`]
+//! of their target join the set for another round. At most [`MAX_ROUNDS`]
 //! rounds; the rows the last applied solution did not hold take one
 //! sequential impulse each ([`sequential_remainder`]). The block solve's
 //! loop (releases only, 4 rounds) left rows that the solution drove into
@@ -65,7 +75,20 @@
 //! start yet) unsolved, 32 solve them. A primal loop (a partial step to
 //! the first row reaching zero) and block principal pivoting (Júdice and
 //! Pires, with Murty's single exchanges) needed hundreds of rounds on the
-//! first substep of a 12-row pile. Friction is taken by the caller before
+//! first substep of a 12-row pile. But the block exchanges can cycle: in
+//! an even pile under a ball 100× lighter than its circles (a group of
+//! uneven masses, but a statically indeterminate one of equal circles),
+//! rows were released and taken in again in turn until every solve's
+//! rounds ran out; so once a row released twice is short again, one row
+//! changes per round (the shortest joins, the hardest pulling leaves),
+//! with more rounds for small groups ([`MIN_ROUNDS`]).
+//!
+//! The rounds apply and take back impulses row by row, each application
+//! rounded on its own; at the end the velocities are put back as they
+//! were and each row's change of impulse applied once, so a row that ends
+//! where it started leaves nothing (released rows at a slant left a few
+//! ulps sideways, enough to turn a column of circles off the axis the
+//! classification of the next step reads). Friction is taken by the caller before
 //! the normal solve, as for the block solve (`world::step::solve`), so each
 //! sweep ends with the normal rows exact.
 //!
@@ -93,8 +116,18 @@ pub(crate) const MAX_SPARSE_WORK: usize = 1 << 22;
 /// while contacts came and went, and the crowd ended 0.33 deep in itself
 /// (0.005–0.034 on the covering trees); they keep the covering trees.
 pub(crate) const MAX_SPARSE_ROWS: usize = 256;
-/// Active-set rounds per solve.
-const ROUNDS: usize = 32;
+/// Active-set rounds per solve: at least [`MIN_ROUNDS`], and up to
+/// [`MAX_ROUNDS`] while their factorisations' work stays within
+/// [`ROUND_WORK`] multiply-adds. The first substep of a pile with no warm
+/// start needs up to about 30 (a ×10 000 pile); an even pile under a light
+/// ball, whose set cycles until it turns to single exchanges (see
+/// [`solve_sparse_velocities`]), up to 65 for a 95-row group.
+const MIN_ROUNDS: usize = 32;
+/// See [`MIN_ROUNDS`].
+const MAX_ROUNDS: usize = 128;
+/// See [`MIN_ROUNDS`]: 2²⁵ multiply-adds, 128 rounds of a group whose
+/// profile work is 2¹⁸ (a 212-row pile's is about 1.2e5).
+const ROUND_WORK: usize = 1 << 25;
 
 /// Working memory of [`plan_sparse`].
 #[derive(Clone, Debug, Default)]
@@ -308,6 +341,16 @@ pub(crate) struct SparseScratch<S: Scalar> {
     solved: Vec<bool>,
     /// Rows released since then, with their impulses.
     released: Vec<(usize, S)>,
+    /// Per group position: the row's accumulated impulse when the solve
+    /// started.
+    start_impulse: Vec<S>,
+    /// The group's movable bodies' velocities when the solve started
+    /// (`(slot, velocity)`, a body once per row end).
+    start_velocity: Vec<(u32, Vec2<S>)>,
+    /// Per elimination index: how often released in this solve.
+    was_released: Vec<u8>,
+    /// The profile work `Σ pᵢ²` of the group prepared last.
+    work: usize,
 }
 
 impl<S: Scalar> Default for SparseScratch<S> {
@@ -326,6 +369,10 @@ impl<S: Scalar> Default for SparseScratch<S> {
             active_rows: Vec::new(),
             solved: Vec::new(),
             released: Vec::new(),
+            start_impulse: Vec::new(),
+            start_velocity: Vec::new(),
+            was_released: Vec::new(),
+            work: 0,
         }
     }
 }
@@ -342,9 +389,12 @@ impl<S: Scalar> SparseScratch<S> {
         let n = order.len();
         self.offset.clear();
         let mut at = 0;
+        self.work = 0;
         for (k, &f) in first.iter().enumerate() {
             self.offset.push(at);
-            at += k - f as usize + 1;
+            let profile = k - f as usize + 1;
+            at += profile;
+            self.work += profile * profile;
         }
         self.offset.push(at);
         self.scale.clear();
@@ -512,6 +562,20 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
     work: &mut SparseScratch<S>,
 ) {
     work.prepare(rows, group, order, first);
+    // The impulses and velocities at the start, for the single application
+    // of the impulse changes at the end (below).
+    work.start_impulse.clear();
+    work.start_impulse
+        .extend(group.iter().map(|&ri| rows[ri].normal_impulse));
+    work.start_velocity.clear();
+    for &ri in group {
+        let row = &rows[ri];
+        for (slot, w) in [(row.a, row.inverse_mass_a), (row.b, row.inverse_mass_b)] {
+            if w.is_positive() {
+                work.start_velocity.push((slot, velocities[slot as usize]));
+            }
+        }
+    }
     let normal_velocity = |row: &ContactConstraint<S>, v: &[Vec2<S>]| {
         (v[row.b as usize] - v[row.a as usize]).dot(row.normal)
     };
@@ -533,7 +597,16 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
     // the bodies its row held unsupported.
     work.released.clear();
     let mut finished = false;
-    for _ in 0..ROUNDS {
+    // The largest shortfall of an active row after the last solution
+    // applied (refinement below).
+    let mut last_residual = S::MAX;
+    // Whether a row released in this solve was short again (single
+    // exchanges from then on, below).
+    let mut cycling = false;
+    work.was_released.clear();
+    work.was_released.resize(order.len(), 0);
+    let rounds = (ROUND_WORK / work.work.max(1)).clamp(MIN_ROUNDS, MAX_ROUNDS);
+    for _ in 0..rounds {
         let solved = work.solve_active(rows, group, order, first, |row| {
             row.target_velocity.sub(normal_velocity(row, velocities))
         });
@@ -542,12 +615,24 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
             break;
         }
         // Rows that would pull leave the set (their impulse zeroed), and
-        // the rest is solved again.
+        // the rest is solved again; once the set cycles (below), only the
+        // row that would pull hardest.
+        let mut pull = (S::ZERO, usize::MAX);
+        for (k, &p) in order.iter().enumerate() {
+            let total = rows[group[p as usize]].normal_impulse.add(work.rhs[k]);
+            if work.active[k] && total < pull.0 {
+                pull = (total, k);
+            }
+        }
         let mut released = false;
         for (k, &p) in order.iter().enumerate() {
             let ri = group[p as usize];
-            if work.active[k] && rows[ri].normal_impulse.add(work.rhs[k]).is_negative() {
+            if work.active[k]
+                && rows[ri].normal_impulse.add(work.rhs[k]).is_negative()
+                && (!cycling || k == pull.1)
+            {
                 released = true;
+                work.was_released[k] = work.was_released[k].saturating_add(1);
                 work.active[k] = false;
                 let old = rows[ri].normal_impulse;
                 work.released.push((ri, old));
@@ -557,6 +642,7 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
             }
         }
         if released {
+            last_residual = S::MAX;
             continue;
         }
         for (k, &p) in order.iter().enumerate() {
@@ -573,18 +659,66 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         work.released.clear();
         work.solved.clear();
         work.solved.extend_from_slice(&work.active);
-        // Rows the solution left short join the set for the next round.
-        let mut joined = false;
+        // Iterative refinement (module notes): another round on what the
+        // active rows still lack, with the same factor, while the largest
+        // shortfall keeps halving (one that stops shrinking is a target
+        // the other rows contradict: no round mends it). The rows off the
+        // set see the active rows' shortfall too (a dependent row of a
+        // pile is short by what its neighbours lack): while what they lack
+        // is within four times the active rows' shortfall, refinement
+        // comes first (taken in while the regularisation's shortfall
+        // lasted, such rows were released and joined again in turn).
+        let mut residual = S::ZERO;
         for (k, &p) in order.iter().enumerate() {
-            let row = &rows[group[p as usize]];
-            if !work.active[k]
-                && row.target_velocity.sub(normal_velocity(row, velocities)) > tolerance
-            {
-                work.active[k] = true;
-                joined = true;
+            if work.active[k] {
+                let row = &rows[group[p as usize]];
+                residual = residual.max(
+                    row.target_velocity
+                        .sub(normal_velocity(row, velocities))
+                        .abs(),
+                );
             }
         }
-        if !joined {
+        // The rows off the set short of their target: the shortest, and
+        // whether one released twice in this solve is among them: the set
+        // then cycles (rows of a statically
+        // indeterminate pile taken in and released in turn: an even pile
+        // under a ball 100× lighter than its circles never settled in 32
+        // rounds, the last solution held some rows while others closed at
+        // 0.3 units/s, and the pile sank 5–18 times its resting bound):
+        // from then on one row changes per round, the shortest joining and
+        // the hardest pulling leaving (single exchanges, as in Murty's
+        // method).
+        let mut short = (tolerance, usize::MAX);
+        for (k, &p) in order.iter().enumerate() {
+            let row = &rows[group[p as usize]];
+            let lack = row.target_velocity.sub(normal_velocity(row, velocities));
+            if !work.active[k] && lack > tolerance {
+                cycling |= work.was_released[k] >= 2;
+                if lack > short.0 {
+                    short = (lack, k);
+                }
+            }
+        }
+        let far_short = short.1 != usize::MAX && short.0 > residual.mul_int(4);
+        let mut again = !far_short && residual > tolerance && residual < last_residual.half();
+        last_residual = residual;
+        if !again {
+            // Rows the solution left short join the set for the next
+            // round (a new set: its refinement starts afresh).
+            for (k, &p) in order.iter().enumerate() {
+                let row = &rows[group[p as usize]];
+                if !work.active[k]
+                    && row.target_velocity.sub(normal_velocity(row, velocities)) > tolerance
+                    && (!cycling || k == short.1)
+                {
+                    work.active[k] = true;
+                    again = true;
+                    last_residual = S::MAX;
+                }
+            }
+        }
+        if !again {
             finished = true;
             break;
         }
@@ -592,8 +726,25 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
     if !finished {
         for &(ri, old) in work.released.iter().rev() {
             rows[ri].normal_impulse = old;
+        }
+    }
+    // The velocities as they were when the solve started.
+    for &(slot, v) in &work.start_velocity {
+        velocities[slot as usize] = v;
+    }
+    // The rounds applied and took back impulses row by row (a release
+    // takes back everything its row received, each application rounded on
+    // its own): rows that end where they started would leave a few ulps in
+    // their bodies, and a released row at a slant would set a column of
+    // circles aside by them (the group, then no longer along the axis, left
+    // the exact solve in the next step: see `row_groups::resting_or_struck`).
+    // So every row's change of impulse is applied once, in group order, to
+    // the velocities the solve started from.
+    for (&ri, &before) in group.iter().zip(&work.start_impulse) {
+        let change = rows[ri].normal_impulse.sub(before);
+        if change != S::ZERO {
             let row = rows[ri];
-            apply_impulse(&row, old, velocities);
+            apply_impulse(&row, change, velocities);
         }
     }
     work.active_rows.clear();
@@ -629,7 +780,7 @@ pub(crate) fn solve_sparse_positions<S: Scalar>(
     for (k, &p) in order.iter().enumerate() {
         work.active[k] = correction_of(&rows[group[p as usize]], displacements).is_negative();
     }
-    for _ in 0..ROUNDS {
+    for _ in 0..MIN_ROUNDS {
         let solved = work.solve_active(rows, group, order, first, |row| {
             correction_of(row, displacements).neg()
         });
