@@ -30,3 +30,22 @@ fn a_restored_warm_start_impulse_of_any_size_leaves_every_body_within_max_speed(
         }
     }
 }
+
+/// A snapshot (a fuzzer's mutation, checksum repaired) whose sleeping box
+/// moves at 10 625 570 units/s, `max_speed` being 4 096. A sleeping body
+/// is never written back, so the step never clamped it and it left every
+/// tick above the limit. No world the engine makes holds such a body
+/// (`add_body` and the velocity commands refuse it, write-back clamps
+/// every awake body, a body falls asleep at rest), so restore refuses it
+/// with a reason a person can act on.
+#[test]
+fn a_restored_body_above_max_speed_is_refused() {
+    let bytes =
+        include_bytes!("../fuzz/seeds/snapshot_restore/mixed.sleeping-box-above-max-speed.snap");
+    let error = World::<Fx>::restore(bytes).expect_err("a body above max_speed");
+    let reason = error.to_string();
+    assert!(
+        reason.contains("velocity above max_speed"),
+        "unexpected reason: {reason}"
+    );
+}

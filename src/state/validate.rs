@@ -172,6 +172,15 @@ impl<S: Scalar> World<S> {
                     if !b.awake && b.frozen {
                         return bad(id, "a frozen body cannot sleep");
                     }
+                    // The step clamps every awake body to `max_speed` per
+                    // axis at write-back, `add_body` and the velocity
+                    // commands refuse more, and a body falls asleep at
+                    // rest: no world the engine makes holds a faster one.
+                    // A sleeping body is never written back, so one
+                    // restored faster would keep its speed for ever.
+                    if b.velocity.x.abs() > max_speed || b.velocity.y.abs() > max_speed {
+                        return bad(id, "velocity above max_speed");
+                    }
                 }
             }
             // Membership of sleepers is checked with the islands.
