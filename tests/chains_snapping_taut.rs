@@ -45,6 +45,7 @@
 use clockwork2d::prelude::*;
 
 mod common;
+use common::chain_stretch::worst_stretch;
 use common::oscillators::{pos, vel};
 
 const LINK_MASS: f64 = 0.1;
@@ -150,13 +151,7 @@ fn run(snap: Snap) -> (f64, f64, f64) {
     let (mut worst, mut highest) = (0.0f64, f64::MIN);
     for _ in 0..TICKS {
         world.step();
-        let mut previous = anchor;
-        for &id in &ids {
-            let p = pos(&world, id);
-            let length = (p.0 - previous.0).hypot(p.1 - previous.1);
-            worst = worst.max((length - SEGMENT) / SEGMENT);
-            previous = p;
-        }
+        worst = worst.max(worst_stretch(&world, anchor, &ids, SEGMENT));
         let energy: f64 = ids
             .iter()
             .zip(&masses)

@@ -16,6 +16,9 @@
 
 use clockwork2d::prelude::*;
 
+mod common;
+use common::chain_stretch::worst_stretch;
+
 const LINKS: usize = 200;
 const SEGMENT: f64 = 0.1;
 const LINK_MASS: f64 = 0.1;
@@ -80,13 +83,7 @@ fn swing(ratio: f64, target: Target) -> (f64, f64, f64) {
     let (mut worst, mut last, mut fastest_box) = (0.0f64, 0.0f64, 0.0f64);
     for tick in 1..=TICKS {
         world.step();
-        let mut previous = (0.0, 0.0);
-        let mut stretch = 0.0f64;
-        for &id in &links {
-            let p = world.body(id).unwrap().position().to_f64();
-            stretch = stretch.max(((p.0 - previous.0).hypot(p.1 - previous.1) - SEGMENT) / SEGMENT);
-            previous = p;
-        }
+        let stretch = worst_stretch(&world, (0.0, 0.0), &links, SEGMENT);
         worst = worst.max(stretch);
         if tick + 60 > TICKS {
             last = last.max(stretch);

@@ -32,6 +32,7 @@ use clockwork2d::prelude::*;
 
 mod common;
 use common::Rng;
+use common::chain_stretch::worst_stretch;
 
 const SLOP: f64 = 1e-4;
 /// How far one rope or contact may rest beyond its length or inside its
@@ -240,13 +241,7 @@ fn released_chain(links: usize, ratio: f64, settings: WorldSettings, seconds: us
     let (mut worst, mut last) = (0.0f64, 0.0f64);
     for t in 0..ticks {
         world.step();
-        let mut previous = (0.0, 0.0);
-        let mut stretch = 0.0f64;
-        for &id in &ids {
-            let p = world.body(id).unwrap().position().to_f64();
-            stretch = stretch.max(((p.0 - previous.0).hypot(p.1 - previous.1) - segment) / segment);
-            previous = p;
-        }
+        let stretch = worst_stretch(&world, (0.0, 0.0), &ids, segment);
         worst = worst.max(stretch);
         if t + hz >= ticks {
             last = last.max(stretch);
@@ -398,13 +393,7 @@ fn chain_shape(
     let (mut worst, mut last, mut rise) = (0.0f64, 0.0f64, f64::MIN);
     for t in 0..ticks {
         world.step();
-        let mut previous = (0.0, 0.0);
-        let mut stretch = 0.0f64;
-        for &id in &ids {
-            let p = world.body(id).unwrap().position().to_f64();
-            stretch = stretch.max(((p.0 - previous.0).hypot(p.1 - previous.1) - segment) / segment);
-            previous = p;
-        }
+        let stretch = worst_stretch(&world, (0.0, 0.0), &ids, segment);
         worst = worst.max(stretch);
         if t + 60 >= ticks {
             last = last.max(stretch);

@@ -48,6 +48,9 @@
 use clockwork2d::geometry::Shape;
 use clockwork2d::prelude::*;
 
+mod common;
+use common::chain_stretch::worst_stretch_of_points;
+
 /// The engine's default linear slop.
 const SLOP: f64 = 1e-4;
 /// How far one rope or contact may rest beyond its length or inside its
@@ -433,12 +436,11 @@ fn linked_boxes(n: usize, half: f64, length: f64, ratio: f64) -> (f64, f64) {
                 overlap = overlap.max(ox.min(oy));
             }
         }
-        let mut previous = (0.0, 0.0);
-        for &p in &at {
-            let d = (p.0 - previous.0).hypot(p.1 - previous.1);
-            stretch = stretch.max((d - length) / length);
-            previous = p;
-        }
+        stretch = stretch.max(worst_stretch_of_points(
+            (0.0, 0.0),
+            at.iter().copied(),
+            length,
+        ));
     }
     (overlap, stretch)
 }

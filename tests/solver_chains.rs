@@ -28,6 +28,7 @@
 use clockwork2d::prelude::*;
 
 mod common;
+use common::chain_stretch::worst_stretch;
 use common::oscillators::{pos, vel};
 
 const LINK_MASS: f64 = 0.1;
@@ -137,15 +138,10 @@ fn run(chain: Chain, seconds: usize) -> Run {
     };
     for tick in 0..ticks {
         world.step();
-        let mut previous = (0.0, 0.0);
-        let mut stretch = 0.0f64;
-        for &id in &ids {
-            let p = pos(&world, id);
-            run.moved_sideways |= world.body(id).unwrap().position().x != Fx::ZERO;
-            stretch = stretch
-                .max(((p.0 - previous.0).hypot(p.1 - previous.1) - chain.segment) / chain.segment);
-            previous = p;
-        }
+        let stretch = worst_stretch(&world, (0.0, 0.0), &ids, chain.segment);
+        run.moved_sideways |= ids
+            .iter()
+            .any(|&id| world.body(id).unwrap().position().x != Fx::ZERO);
         let energy: f64 = ids
             .iter()
             .zip(&masses)

@@ -312,6 +312,31 @@ pub(crate) fn plan_sparse<S: Scalar>(
     true
 }
 
+/// A contact group as [`plan_sparse`] ordered it: the group (indices
+/// into the rows), its elimination order (positions in the group) and the
+/// first index of each elimination row's profile.
+#[derive(Clone, Copy)]
+struct SparsePlan<'a> {
+    group: &'a [usize],
+    order: &'a [u32],
+    first: &'a [u32],
+}
+
+impl SparsePlan<'_> {
+    /// The row index of elimination index `k`.
+    fn row(&self, k: usize) -> usize {
+        self.group[self.order[k] as usize]
+    }
+
+    /// `(elimination index, row index)` in elimination order.
+    fn rows(&self) -> impl Iterator<Item = (usize, usize)> + '_ {
+        self.order
+            .iter()
+            .enumerate()
+            .map(|(k, &p)| (k, self.group[p as usize]))
+    }
+}
+
 /// Working memory of the sparse solve, and its last factor.
 #[derive(Clone, Debug)]
 pub(crate) struct SparseScratch<S: Scalar> {
@@ -379,18 +404,12 @@ impl<S: Scalar> Default for SparseScratch<S> {
 
 impl<S: Scalar> SparseScratch<S> {
     /// Offsets and scales for a group in this order.
-    fn prepare(
-        &mut self,
-        rows: &[ContactConstraint<S>],
-        group: &[usize],
-        order: &[u32],
-        first: &[u32],
-    ) {
-        let n = order.len();
+    fn prepare(&mut self, rows: &[ContactConstraint<S>], plan: SparsePlan) {
+        let n = plan.order.len();
         self.offset.clear();
         let mut at = 0;
         self.work = 0;
-        for (k, &f) in first.iter().enumerate() {
+        for (k, &f) in plan.first.iter().enumerate() {
             self.offset.push(at);
             let profile = k - f as usize + 1;
             at += profile;
@@ -398,11 +417,8 @@ impl<S: Scalar> SparseScratch<S> {
         }
         self.offset.push(at);
         self.scale.clear();
-        self.scale.extend(
-            order
-                .iter()
-                .map(|&p| rows[group[p as usize]].effective_mass.sqrt()),
-        );
+        self.scale
+            .extend(plan.rows().map(|(_, ri)| rows[ri].effective_mass.sqrt()));
         self.active.clear();
         self.active.resize(n, false);
     }
@@ -411,14 +427,8 @@ impl<S: Scalar> SparseScratch<S> {
     /// coupling), and factors it unless it is the matrix factored last.
     /// (Index loops: each reads several arrays at shifted offsets.)
     #[allow(clippy::needless_range_loop)]
-    fn build_and_factor(
-        &mut self,
-        rows: &[ContactConstraint<S>],
-        group: &[usize],
-        order: &[u32],
-        first: &[u32],
-    ) {
-        let n = order.len();
+    fn build_and_factor(&mut self, rows: &[ContactConstraint<S>], plan: SparsePlan) {
+        let (n, first) = (plan.order.len(), plan.first);
         let epsilon = S::from_ratio(1, 65_536);
         self.matrix.clear();
         self.matrix.resize(self.offset[n], S::ZERO);
@@ -429,13 +439,13 @@ impl<S: Scalar> SparseScratch<S> {
                 self.matrix[o + k - f] = S::ONE;
                 continue;
             }
-            let rk = &rows[group[order[k] as usize]];
+            let rk = &rows[plan.row(k)];
             let sk = self.scale[k];
             for j in f..k {
                 if !self.active[j] {
                     continue;
                 }
-                let rj = &rows[group[order[j] as usize]];
+                let rj = &rows[plan.row(j)];
                 let a = coupling((rk, rk.normal), (rj, rj.normal));
                 if a != S::ZERO {
                     self.matrix[o + j - f] = a.mul(sk).mul(self.scale[j]);
@@ -526,25 +536,23 @@ impl<S: Scalar> SparseScratch<S> {
     fn solve_active(
         &mut self,
         rows: &[ContactConstraint<S>],
-        group: &[usize],
-        order: &[u32],
-        first: &[u32],
+        plan: SparsePlan,
         mut rhs: impl FnMut(&ContactConstraint<S>) -> S,
     ) -> bool {
         if !self.active.iter().any(|&a| a) {
             return false;
         }
-        self.build_and_factor(rows, group, order, first);
+        self.build_and_factor(rows, plan);
         self.rhs.clear();
-        for (k, &p) in order.iter().enumerate() {
+        for (k, ri) in plan.rows() {
             let e = if self.active[k] {
-                rhs(&rows[group[p as usize]]).mul(self.scale[k])
+                rhs(&rows[ri]).mul(self.scale[k])
             } else {
                 S::ZERO
             };
             self.rhs.push(e);
         }
-        self.substitute(first);
+        self.substitute(plan.first);
         for (x, &s) in self.rhs.iter_mut().zip(&self.scale) {
             *x = x.mul(s);
         }
@@ -561,7 +569,12 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
     velocities: &mut [Vec2<S>],
     work: &mut SparseScratch<S>,
 ) {
-    work.prepare(rows, group, order, first);
+    let plan = SparsePlan {
+        group,
+        order,
+        first,
+    };
+    work.prepare(rows, plan);
     // The impulses and velocities at the start, for the single application
     // of the impulse changes at the end (below).
     work.start_impulse.clear();
@@ -581,8 +594,8 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
     };
     // Rows carrying impulse or short of their target start active (as in
     // the block solve).
-    for (k, &p) in order.iter().enumerate() {
-        let row = &rows[group[p as usize]];
+    for (k, ri) in plan.rows() {
+        let row = &rows[ri];
         work.active[k] = row.normal_impulse.is_positive()
             || !row.separation.is_positive()
             || normal_velocity(row, velocities) < row.target_velocity;
@@ -607,7 +620,7 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
     work.was_released.resize(order.len(), 0);
     let rounds = (ROUND_WORK / work.work.max(1)).clamp(MIN_ROUNDS, MAX_ROUNDS);
     for _ in 0..rounds {
-        let solved = work.solve_active(rows, group, order, first, |row| {
+        let solved = work.solve_active(rows, plan, |row| {
             row.target_velocity.sub(normal_velocity(row, velocities))
         });
         if !solved {
@@ -618,15 +631,14 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         // the rest is solved again; once the set cycles (below), only the
         // row that would pull hardest.
         let mut pull = (S::ZERO, usize::MAX);
-        for (k, &p) in order.iter().enumerate() {
-            let total = rows[group[p as usize]].normal_impulse.add(work.rhs[k]);
+        for (k, ri) in plan.rows() {
+            let total = rows[ri].normal_impulse.add(work.rhs[k]);
             if work.active[k] && total < pull.0 {
                 pull = (total, k);
             }
         }
         let mut released = false;
-        for (k, &p) in order.iter().enumerate() {
-            let ri = group[p as usize];
+        for (k, ri) in plan.rows() {
             if work.active[k]
                 && rows[ri].normal_impulse.add(work.rhs[k]).is_negative()
                 && (!cycling || k == pull.1)
@@ -645,11 +657,10 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
             last_residual = S::MAX;
             continue;
         }
-        for (k, &p) in order.iter().enumerate() {
+        for (k, ri) in plan.rows() {
             if !work.active[k] {
                 continue;
             }
-            let ri = group[p as usize];
             let x = work.rhs[k];
             rows[ri].normal_impulse = rows[ri].normal_impulse.add(x);
             let row = rows[ri];
@@ -669,9 +680,9 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         // comes first (taken in while the regularisation's shortfall
         // lasted, such rows were released and joined again in turn).
         let mut residual = S::ZERO;
-        for (k, &p) in order.iter().enumerate() {
+        for (k, ri) in plan.rows() {
             if work.active[k] {
-                let row = &rows[group[p as usize]];
+                let row = &rows[ri];
                 residual = residual.max(
                     row.target_velocity
                         .sub(normal_velocity(row, velocities))
@@ -690,8 +701,8 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         // the hardest pulling leaving (single exchanges, as in Murty's
         // method).
         let mut short = (tolerance, usize::MAX);
-        for (k, &p) in order.iter().enumerate() {
-            let row = &rows[group[p as usize]];
+        for (k, ri) in plan.rows() {
+            let row = &rows[ri];
             let lack = row.target_velocity.sub(normal_velocity(row, velocities));
             if !work.active[k] && lack > tolerance {
                 cycling |= work.was_released[k] >= 2;
@@ -706,8 +717,8 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         if !again {
             // Rows the solution left short join the set for the next
             // round (a new set: its refinement starts afresh).
-            for (k, &p) in order.iter().enumerate() {
-                let row = &rows[group[p as usize]];
+            for (k, ri) in plan.rows() {
+                let row = &rows[ri];
                 if !work.active[k]
                     && row.target_velocity.sub(normal_velocity(row, velocities)) > tolerance
                     && (!cycling || k == short.1)
@@ -748,9 +759,9 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         }
     }
     work.active_rows.clear();
-    for (k, &p) in order.iter().enumerate() {
+    for (k, ri) in plan.rows() {
         if applied && work.solved[k] {
-            work.active_rows.push(group[p as usize]);
+            work.active_rows.push(ri);
         }
     }
     work.active_rows.sort_unstable();
@@ -769,7 +780,12 @@ pub(crate) fn solve_sparse_positions<S: Scalar>(
     (slop, beta, max_correction): (S, S, S),
     work: &mut SparseScratch<S>,
 ) {
-    work.prepare(rows, group, order, first);
+    let plan = SparsePlan {
+        group,
+        order,
+        first,
+    };
+    work.prepare(rows, plan);
     let correction_of = |row: &ContactConstraint<S>, d: &[Vec2<S>]| {
         let separation = row
             .separation
@@ -777,13 +793,11 @@ pub(crate) fn solve_sparse_positions<S: Scalar>(
         beta.mul(separation.add(slop))
             .clamp(max_correction.neg(), S::ZERO)
     };
-    for (k, &p) in order.iter().enumerate() {
-        work.active[k] = correction_of(&rows[group[p as usize]], displacements).is_negative();
+    for (k, ri) in plan.rows() {
+        work.active[k] = correction_of(&rows[ri], displacements).is_negative();
     }
     for _ in 0..MIN_ROUNDS {
-        let solved = work.solve_active(rows, group, order, first, |row| {
-            correction_of(row, displacements).neg()
-        });
+        let solved = work.solve_active(rows, plan, |row| correction_of(row, displacements).neg());
         if !solved {
             return;
         }
@@ -795,9 +809,9 @@ pub(crate) fn solve_sparse_positions<S: Scalar>(
             }
         }
         if !dropped {
-            for (k, &p) in order.iter().enumerate() {
+            for (k, ri) in plan.rows() {
                 if work.active[k] {
-                    apply_impulse(&rows[group[p as usize]], work.rhs[k], displacements);
+                    apply_impulse(&rows[ri], work.rhs[k], displacements);
                 }
             }
             return;

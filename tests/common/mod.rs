@@ -1,5 +1,6 @@
-//! Set-up shared by the integration tests: scene builders (here), how deep
-//! two shapes overlap (`depth`), edited files (`file_checksum`), proptest
+//! Set-up shared by the integration tests: scene builders (here), how far a
+//! chain of ropes is stretched (`chain_stretch`), how deep two shapes
+//! overlap (`depth`), edited files (`file_checksum`), proptest
 //! strategies (`fx_strategies`), the oscillator tests' settings and probes
 //! (`oscillators`), raw-bit access to the fixed-point types for exact
 //! reference arithmetic (`raw_fixed`), resting scenes of boxes and their
@@ -11,6 +12,7 @@
 //! edge with `fx()` / `to_f64()`; the simulation itself sees only `Fx`.
 #![allow(dead_code)] // each test crate uses a different subset
 
+pub mod chain_stretch;
 pub mod depth;
 pub mod file_checksum;
 pub mod fx_strategies;
