@@ -435,17 +435,39 @@ fn one_body_driven_into_a_wall_never_overlaps_anything() {
     );
 }
 
-/// Still open (issue 13): rows of 2 and 4 bodies driven into the wall.
-/// Seen: with e = 1, the bounce's rebound sweep lets a launched box pass
-/// the next box of the row (at 50 units/s, two boxes of the projectile's
-/// mass: the first ends 0.018 into the second, then ahead of it); with e =
-/// 0, diagonal rows of small boxes still overlap at 50 units/s (not
-/// traced). Of the 2304 rows, 710 fail (1788 before the hold of
-/// followers, 1000 before the stop at meetings).
+/// Two bodies in a row driven along the wall's normal (the family's 576
+/// rows of 2 at angle 0): no two bodies overlap by more than the slop.
+///
+/// Before the rebound sweep moved rebounding partners along their own
+/// rebounds (`World::sweep_rebounds`), 96 of them failed, every one with
+/// e = 1: the projectile launches both struck bodies together, and the
+/// sweep of the one behind, against the end of the one ahead (not yet
+/// moved), stopped it where that end lay across its path: 0.018 into the
+/// other at 50 units/s (two boxes of the projectile's mass, half size
+/// 0.05), up to 0.5 with struck bodies 100× lighter.
+#[test]
+fn rows_of_two_driven_along_the_wall_normal_never_overlap() {
+    let rows: Vec<Row> = rows(2).into_iter().filter(|r| r.angle == 0.0).collect();
+    assert_eq!(rows.len(), 576);
+    let (failures, _) = overlapping(&rows);
+    assert!(
+        failures.is_empty(),
+        "{} of {} rows overlap",
+        failures.len(),
+        rows.len()
+    );
+}
+
+/// Still open (issue 13): rows of 2 bodies at 0.5 rad from the wall's
+/// normal and rows of 4 (not traced: with e = 0 as with e = 1). Of
+/// these 1728 rows, 320 fail (604 before the rebound sweep's partners
+/// moved, none of the 320 passing then; of all 2304 with the rows of 2
+/// along the normal: 700 then, 1788 before the hold of followers, 1000
+/// before the stop at meetings).
 #[test]
 #[ignore = "open: rows of several bodies (issue 13)"]
 fn rows_of_several_bodies_driven_into_a_wall_still_open() {
-    let mut rows = rows(2);
+    let mut rows: Vec<Row> = rows(2).into_iter().filter(|r| r.angle != 0.0).collect();
     rows.extend(self::rows(4));
     let (failures, _) = overlapping(&rows);
     assert!(

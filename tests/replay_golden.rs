@@ -33,9 +33,9 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0xa103dbe53091df39),
-    ("balls", 0xbe6e46081c15766c),
+    ("balls", 0xfb4763aafa4a48e3),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0x87eb60a834e4376e),
+    ("mixed", 0x474fbc4bc8337ba3),
 ];
 // END GOLDEN
 

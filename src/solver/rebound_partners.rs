@@ -96,6 +96,15 @@ impl ReboundPartners {
     pub(crate) fn of(&self, k: usize) -> &[u32] {
         &self.partners[self.starts[k]..self.starts[k + 1]]
     }
+
+    /// The index in the rebound list of `slot`'s rebound, if it has one.
+    pub(crate) fn rebound_of(&self, slot: u32) -> Option<usize> {
+        self.rebound_of_slot
+            .get(slot as usize)
+            .copied()
+            .filter(|&k| k != NOT_REBOUNDING)
+            .map(|k| k as usize)
+    }
 }
 
 #[cfg(test)]

@@ -126,6 +126,19 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) rebounds: Vec<Rebound<S>>,
     /// The broad-phase partners of each rebounding slot.
     pub(crate) rebound_partners: ReboundPartners,
+    /// Per rebound (in `rebounds` order): whether the last pass of the
+    /// rebound sweep shortened it, and the pass being made (working memory
+    /// of `World::sweep_rebounds`).
+    pub(crate) rebound_shortened: Vec<bool>,
+    pub(crate) rebound_shortening: Vec<bool>,
+    /// Per rebound: whether the next pass sweeps it again (a rebounding
+    /// partner of it was shortened; working memory of
+    /// `World::sweep_rebounds`).
+    pub(crate) rebound_dirty: Vec<bool>,
+    /// Per rebound: its motion as the bounce made it, and the share of it
+    /// the sweep has left it (working memory of `World::sweep_rebounds`).
+    pub(crate) rebound_full: Vec<Vec2<S>>,
+    pub(crate) rebound_reach: Vec<S>,
     /// A broad phase of its own for the rebounds that leave their proxies
     /// (`world::step::rebound_escape`; its x order is of that query).
     pub(crate) rebound_broad_phase: BroadPhase,
