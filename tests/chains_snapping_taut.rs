@@ -35,10 +35,12 @@
 //! and 10⁴×, 5 links straight up at 1000× and 10⁴×), the rope is held at
 //! its length but the heavy end keeps its falling speed for that tick, so
 //! the energy read at the tick's end is above the bound (up to +64 J
-//! against 3 J) until the next tick's velocity solve catches it; and 20
-//! links straight up at 10⁴× with two substeps come apart (the warm start
-//! of the catch on the light links runs to velocities of 4e5 and the
-//! solve overflows).
+//! against 3 J) until the next tick's velocity solve catches it.
+//!
+//! 20 links straight up at 10⁴× with two substeps came apart (ropes
+//! 3.6·10⁵ times their length) until the velocity solve of a group holding
+//! ropes and contacts was guarded (`tests/chains_falling_onto_themselves.rs`
+//! has that family).
 //!
 //! Figures print with `--nocapture`.
 
@@ -170,10 +172,7 @@ fn run(snap: Snap) -> (f64, f64, f64) {
 fn still_open(snap: &Snap) -> bool {
     match snap.layout {
         Layout::UpAndOut => snap.links <= 3 && snap.ratio >= 1000.0,
-        Layout::StraightUp => {
-            (snap.links == 5 && snap.ratio >= 1000.0 && snap.substeps == 1)
-                || (snap.links == 20 && snap.ratio >= 10000.0 && snap.substeps == 2)
-        }
+        Layout::StraightUp => snap.links == 5 && snap.ratio >= 1000.0 && snap.substeps == 1,
         _ => false,
     }
 }

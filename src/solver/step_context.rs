@@ -32,8 +32,8 @@ pub(crate) struct StepContext<S: Scalar> {
     /// sent beyond where contacts were looked for.
     pub(crate) predicted_velocities: Vec<Vec2<S>>,
     /// Velocity of each slot before the warm start, kept when a contact
-    /// group is solved on covering trees (`world::step::energy_guard`);
-    /// empty otherwise.
+    /// group is solved on covering trees, or a group holds ropes and
+    /// contacts (`world::step::energy_guard`); empty otherwise.
     pub(crate) velocities_before_solve: Vec<Vec2<S>>,
     /// Per slot: the last group the energy guard counted it in.
     pub(crate) energy_marks: Vec<u32>,
@@ -92,6 +92,10 @@ pub(crate) struct StepContext<S: Scalar> {
     pub(crate) rope_correction_cap: Vec<S>,
     /// Each rope row's sideways stiffness for the velocity iterations.
     pub(crate) rope_velocity_side: Vec<S>,
+    /// The same at the start of the substep's velocity iterations, before
+    /// they raised it (the joint-group guard, `world::step::energy_guard`,
+    /// starts a group's solve again from it).
+    pub(crate) rope_velocity_side_start: Vec<S>,
     /// The sideways impulse each rope row received this substep.
     pub(crate) rope_side_impulse: Vec<S>,
     /// The rows the rope solves work on, when any rope is active: the

@@ -1,7 +1,7 @@
 //! Phase "energy guard" (around the velocity iterations): a contact group
-//! solved on covering trees never leaves the solve with more kinetic
-//! energy than it came with, nor with a body thrown through its
-//! neighbours.
+//! solved on covering trees, or a group holding ropes and contacts, never
+//! leaves the solve with more kinetic energy than it came with, nor with
+//! a body thrown through its neighbours.
 //!
 //! Why: a cyclic group of uneven masses above the block solver's size is
 //! solved on a few spanning trees that together cover its rows, one after
@@ -55,12 +55,57 @@
 //! the bounds is left exactly as the trees solved it, so the scenes the
 //! guard does not catch are bit-identical to the solve without it (the
 //! shipped scenes and every golden).
+//!
+//! # Ropes and contacts
+//!
+//! A group holding ropes and contacts (`world::step::solve`, "Ropes and
+//! contacts in one group") is solved on a spanning tree of its rows, the
+//! rows off the tree by sequential impulses after it. Warm-started off
+//! the tree, a row keeps last substep's impulse against everything the
+//! exact solve does: a 10-link chain stacked upright and dropped, its end
+//! 10⁴ times a link, lands on the pile its light links make above the
+//! anchor; a contact between two links in that pile carried the end's
+//! load (an impulse of 214 per tick). When the pile shifted, that contact
+//! kept its 214 while the contacts around it lost theirs, the tree held it
+//! with the slack rope between the same two links (a rope 0.08 slack and a
+//! touching contact, each at 214, pulling and pushing one pair), the
+//! rope's sideways stiffness was raised from that impulse, and the links
+//! left the solve at 190 units/s: ropes 345 % long for the tick. With
+//! twice the links or a 3·10⁴ end they reached `max_speed`, and a 20-link
+//! chain at 10⁴ with two substeps stretched 3.6·10⁵ times its length.
+//!
+//! The bound is the same as above: rope rows are rows with `λ ≥ 0` and
+//! targets ≤ 0 like contacts (a rope is the contact rule on its slack), a
+//! rope's sideways row is a backward-Euler damper (it only takes energy),
+//! so `½|v|²_M` of a converged solve never exceeds its start, and no row
+//! of it closes beyond its target. The speed bound of the contact groups
+//! is not used here: a rope levers a heavy body's motion into light links
+//! legitimately (a ladder of ropes under a 100× body, released at rest,
+//! swings light links faster than twice `g·h` in its first tick). A group
+//! past the bound is solved again the same way, cold, from `v₀` (the warm
+//! start was the fault); if that is still past it (3 substeps of 58 in a
+//! family of 144 dropped chains), by sequential impulses from `v₀`, which
+//! cannot be. The position pass and the rope settling rounds then hold
+//! the ropes' lengths (`tests/chains_falling_onto_themselves.rs`: 9 of 210
+//! chains came apart before, none now).
 
+use super::solve::{raise_rope_velocity_side_stiffness, solve_one_group_velocities};
 use crate::math::{Scalar, Vec2, WideScalar};
 use crate::solver::StepContext;
-use crate::solver::row::solve_velocity_row;
+use crate::solver::row::{ContactConstraint, solve_velocity_row};
 use crate::solver::row_groups::GroupSolve;
+use crate::solver::tree_solve::SideRows;
 use crate::world::World;
+
+/// Whether the joint-group guard checks `group` (rows ascending, the
+/// `ropes` rope rows first): it holds ropes and contacts, and is solved
+/// directly (a group holding a bounce is solved by sequential impulses and
+/// may send a light body off at twice the speed of what struck it).
+fn joint_group_is_guarded(group: &[usize], solve: &GroupSolve, ropes: usize) -> bool {
+    !matches!(solve, GroupSolve::Sequential)
+        && group.first().is_some_and(|&ri| ri < ropes)
+        && group.last().is_some_and(|&ri| ri >= ropes)
+}
 
 impl<S: Scalar> World<S> {
     /// Keeps the velocities before the warm start (`v₀`) when a contact
@@ -70,13 +115,20 @@ impl<S: Scalar> World<S> {
         context.velocities_before_solve.clear();
         // The guard runs on the contact groups, solved alone when no rope
         // is active (ropes join them into the joint groups).
-        let any = context.rope_rows.is_empty()
-            && context
+        let ropes = context.rope_rows.len();
+        let any = if ropes == 0 {
+            context
                 .contact_groups
                 .iter_classified()
                 .any(|(_, velocity, _)| {
                     matches!(velocity, GroupSolve::Trees(_) | GroupSolve::Sparse(_))
-                });
+                })
+        } else {
+            context
+                .joint_groups
+                .iter_classified()
+                .any(|(group, velocity, _)| joint_group_is_guarded(group, velocity, ropes))
+        };
         if any {
             context
                 .velocities_before_solve
@@ -177,6 +229,162 @@ impl<S: Scalar> World<S> {
                     solve_velocity_row(&mut constraints[ri], velocities);
                 }
             }
+        }
+    }
+
+    /// The guard of groups holding ropes and contacts (module notes,
+    /// "Ropes and contacts"): a group whose solve gained kinetic energy,
+    /// or left a row closing far beyond its target, is solved again the
+    /// same way from `v₀`, cold (every impulse of the group at zero, its
+    /// ropes' sideways stiffness as it was before the iterations raised
+    /// it); if that is still past the bounds, by sequential impulses from
+    /// `v₀` (`h`: the substep).
+    pub(super) fn guard_joint_groups(&mut self, h: S) {
+        if self.step_context.velocities_before_solve.is_empty() {
+            return;
+        }
+        let (iterations, slop) = (self.settings.velocity_iterations, self.settings.linear_slop);
+        let StepContext {
+            joint_rows,
+            joint_groups,
+            velocities,
+            velocities_before_solve: before,
+            energy_marks,
+            rope_rows,
+            rope_geometry,
+            rope_velocity_side,
+            rope_velocity_side_start,
+            rope_side_impulse,
+            rope_block,
+            tree,
+            ..
+        } = &mut self.step_context;
+        energy_marks.clear();
+        energy_marks.resize(velocities.len(), u32::MAX);
+        let slots = &self.slots;
+        let ropes = rope_rows.len();
+        let mut stamp = 0u32;
+        let mut past_bounds =
+            |rows: &[ContactConstraint<S>], group: &[usize], velocities: &[Vec2<S>]| {
+                stamp = stamp.wrapping_add(1);
+                let (mut start, mut end) = (S::Wide::ZERO, S::Wide::ZERO);
+                // The fastest body before the solve, `|v_x| + |v_y|` (≥ |v|).
+                let mut fastest = S::ZERO;
+                for &ri in group {
+                    let row = &rows[ri];
+                    for (slot, inverse_mass) in [
+                        (row.a as usize, row.inverse_mass_a),
+                        (row.b as usize, row.inverse_mass_b),
+                    ] {
+                        if !inverse_mass.is_positive() || energy_marks[slot] == stamp {
+                            continue;
+                        }
+                        energy_marks[slot] = stamp;
+                        let Some(body) = slots[slot].body.as_ref() else {
+                            continue;
+                        };
+                        let (v0, v) = (before[slot], velocities[slot]);
+                        fastest = fastest.max(v0.x.abs().add(v0.y.abs()));
+                        start = start.add(body.mass.wide_mul(v0.dot(v0)));
+                        end = end.add(body.mass.wide_mul(v.dot(v)));
+                    }
+                }
+                let allowance = start.narrow().mul(S::from_ratio(1, 1024));
+                let limit = fastest.add(fastest);
+                end > start.add(S::Wide::from_narrow(allowance))
+                    || group.iter().any(|&ri| {
+                        let row = &rows[ri];
+                        let vn = (velocities[row.b as usize] - velocities[row.a as usize])
+                            .dot(row.normal);
+                        row.target_velocity.sub(vn) > limit
+                    })
+            };
+        for (group, solve, _) in joint_groups.iter_classified() {
+            if !joint_group_is_guarded(group, solve, ropes)
+                || !past_bounds(joint_rows, group, velocities)
+            {
+                continue;
+            }
+            reset_group(
+                joint_rows,
+                group,
+                velocities,
+                before,
+                ropes,
+                rope_side_impulse,
+            );
+            for &ri in group.iter().take_while(|&&ri| ri < ropes) {
+                rope_velocity_side[ri] = rope_velocity_side_start[ri];
+            }
+            for iteration in 0..iterations {
+                if iteration > 0 {
+                    raise_rope_velocity_side_stiffness(
+                        &joint_rows[..ropes],
+                        rope_geometry,
+                        h,
+                        rope_velocity_side,
+                    );
+                }
+                let side = SideRows {
+                    stiffness: rope_velocity_side,
+                    accumulated: rope_side_impulse,
+                };
+                solve_one_group_velocities(
+                    joint_rows,
+                    joint_groups,
+                    (group, solve),
+                    velocities,
+                    slop,
+                    Some(side),
+                    rope_block,
+                    tree,
+                );
+            }
+            if !past_bounds(joint_rows, group, velocities) {
+                continue;
+            }
+            reset_group(
+                joint_rows,
+                group,
+                velocities,
+                before,
+                ropes,
+                rope_side_impulse,
+            );
+            for _ in 0..iterations {
+                for &ri in group {
+                    solve_velocity_row(&mut joint_rows[ri], velocities);
+                }
+            }
+        }
+    }
+}
+
+/// Puts `group`'s movable bodies back to their velocities `before` the
+/// solve, and every impulse of its rows (normal, friction, a rope's
+/// sideways impulse) to zero.
+fn reset_group<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    group: &[usize],
+    velocities: &mut [Vec2<S>],
+    before: &[Vec2<S>],
+    ropes: usize,
+    rope_side_impulse: &mut [S],
+) {
+    for &ri in group {
+        let row = &mut rows[ri];
+        row.normal_impulse = S::ZERO;
+        row.tangent_impulse = S::ZERO;
+        for (slot, inverse_mass) in [
+            (row.a as usize, row.inverse_mass_a),
+            (row.b as usize, row.inverse_mass_b),
+        ] {
+            if inverse_mass.is_positive() {
+                velocities[slot] = before[slot];
+            }
+        }
+        if ri < ropes {
+            rope_side_impulse[ri] = S::ZERO;
         }
     }
 }

@@ -132,6 +132,10 @@ impl<S: Scalar> World<S> {
         );
         context.rope_side_impulse.clear();
         context.rope_side_impulse.resize(ropes, S::ZERO);
+        context.rope_velocity_side_start.clear();
+        context
+            .rope_velocity_side_start
+            .extend_from_slice(&context.rope_velocity_side);
         for iteration in 0..self.settings.velocity_iterations {
             if iteration > 0 {
                 raise_rope_velocity_side_stiffness(
@@ -165,6 +169,8 @@ impl<S: Scalar> World<S> {
                 tree,
             );
         }
+        self.guard_joint_groups(h);
+        let context = &mut self.step_context;
         let (rope_part, contact_part) = context.joint_rows.split_at(ropes);
         context.rope_rows.copy_from_slice(rope_part);
         context.constraints.copy_from_slice(contact_part);
@@ -381,7 +387,7 @@ fn rope_velocity_side_stiffness<S: Scalar>(
 /// sweeps have found so far, the jerk's turning is implicit from the
 /// second sweep on. Only raised, so a sweep that releases a rope (its
 /// impulse back to zero) does not switch its stiffness off and on.
-fn raise_rope_velocity_side_stiffness<S: Scalar>(
+pub(super) fn raise_rope_velocity_side_stiffness<S: Scalar>(
     rows: &[ContactConstraint<S>],
     geometry: &[(Vec2<S>, S)],
     h: S,
@@ -471,65 +477,113 @@ fn solve_group_list_velocities<S: Scalar>(
     block: &mut BlockScratch<S>,
     tree: &mut TreeScratch<S>,
 ) {
+    for (group, solve, _) in groups.iter_classified() {
+        let side = side.as_mut().map(|sr| SideRows {
+            stiffness: sr.stiffness,
+            accumulated: &mut *sr.accumulated,
+        });
+        solve_one_group_velocities(
+            rows,
+            groups,
+            (group, solve),
+            velocities,
+            slop,
+            side,
+            block,
+            tree,
+        );
+    }
+}
+
+/// One velocity pass over one group of `groups` (see
+/// [`solve_group_list_velocities`]).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+pub(super) fn solve_one_group_velocities<S: Scalar>(
+    rows: &mut [ContactConstraint<S>],
+    groups: &RowGroups,
+    (group, solve): (&[usize], &GroupSolve),
+    velocities: &mut [Vec2<S>],
+    slop: S,
+    side: Option<SideRows<'_, S>>,
+    block: &mut BlockScratch<S>,
+    tree: &mut TreeScratch<S>,
+) {
     // The rope rows come first: a group holds a rope when its first row is
     // one. A group of contacts alone is solved as a contact group.
     let ropes = side.as_ref().map_or(0, |sr| sr.stiffness.len());
-    for (group, solve, _) in groups.iter_classified() {
-        let holds_rope = group.first().is_some_and(|&ri| ri < ropes);
-        let mut side = side.as_mut().filter(|_| holds_rope);
-        match solve {
-            GroupSolve::Sequential => {
-                match contiguous(group) {
-                    Some(run) => {
-                        for row in &mut rows[run] {
-                            solve_velocity_row(row, velocities);
-                        }
-                    }
-                    None => {
-                        for &ri in group {
-                            solve_velocity_row(&mut rows[ri], velocities);
-                        }
+    let holds_rope = group.first().is_some_and(|&ri| ri < ropes);
+    let mut side = side.filter(|_| holds_rope);
+    match solve {
+        GroupSolve::Sequential => {
+            match contiguous(group) {
+                Some(run) => {
+                    for row in &mut rows[run] {
+                        solve_velocity_row(row, velocities);
                     }
                 }
-                continue;
-            }
-            GroupSolve::Block if side.is_none() => {
-                // Contacts: friction first, so that every sweep ends with
-                // the exact normal solve. Under heavy bodies the friction
-                // rows carry impulses of hundreds (μ·λ of a 1000× load);
-                // solved after the exact solve, they moved the light
-                // bodies by the friction's share in every sweep, and the
-                // sweep ended with the normal rows violated by it: a
-                // hexagonal pile of 4–6 rows of light circles with heavy
-                // (×1000) top, middle or scattered circles sank through
-                // itself (up to 3 557 times the slop bound at the default
-                // 8 iterations); with the exact solve ending the sweep it
-                // rests within the slop (tests/heavy_circle_piles.rs).
-                for &ri in group {
-                    solve_friction_row(&mut rows[ri], velocities);
+                None => {
+                    for &ri in group {
+                        solve_velocity_row(&mut rows[ri], velocities);
+                    }
                 }
-                solve_group_velocities(rows, group, velocities, None, block);
-                continue;
             }
-            GroupSolve::Sparse(range) => {
-                // Friction first, as for the block solve above.
-                for &ri in group {
-                    solve_friction_row(&mut rows[ri], velocities);
-                }
-                solve_sparse_velocities(
-                    rows,
-                    group,
-                    groups.sparse(range),
-                    velocities,
-                    &mut block.sparse,
-                );
-                continue;
+            return;
+        }
+        GroupSolve::Block if side.is_none() => {
+            // Contacts: friction first, so that every sweep ends with
+            // the exact normal solve. Under heavy bodies the friction
+            // rows carry impulses of hundreds (μ·λ of a 1000× load);
+            // solved after the exact solve, they moved the light
+            // bodies by the friction's share in every sweep, and the
+            // sweep ended with the normal rows violated by it: a
+            // hexagonal pile of 4–6 rows of light circles with heavy
+            // (×1000) top, middle or scattered circles sank through
+            // itself (up to 3 557 times the slop bound at the default
+            // 8 iterations); with the exact solve ending the sweep it
+            // rests within the slop (tests/heavy_circle_piles.rs).
+            for &ri in group {
+                solve_friction_row(&mut rows[ri], velocities);
             }
-            GroupSolve::Block => {
-                let side = side.as_mut().map(|sr| (sr.stiffness, &mut *sr.accumulated));
-                solve_group_velocities(rows, group, velocities, side, block);
+            solve_group_velocities(rows, group, velocities, None, block);
+            return;
+        }
+        GroupSolve::Sparse(range) => {
+            // Friction first, as for the block solve above.
+            for &ri in group {
+                solve_friction_row(&mut rows[ri], velocities);
             }
-            GroupSolve::Tree(range) => {
+            solve_sparse_velocities(
+                rows,
+                group,
+                groups.sparse(range),
+                velocities,
+                &mut block.sparse,
+            );
+            return;
+        }
+        GroupSolve::Block => {
+            let side = side.as_mut().map(|sr| (sr.stiffness, &mut *sr.accumulated));
+            solve_group_velocities(rows, group, velocities, side, block);
+        }
+        GroupSolve::Tree(range) => {
+            let side = side.as_mut().map(|sr| SideRows {
+                stiffness: sr.stiffness,
+                accumulated: &mut *sr.accumulated,
+            });
+            solve_tree_velocities(
+                rows,
+                group,
+                groups.plan(range),
+                velocities,
+                slop,
+                side,
+                None,
+                tree,
+            );
+        }
+        GroupSolve::Trees(range) => {
+            for plan in groups.trees(range) {
                 let side = side.as_mut().map(|sr| SideRows {
                     stiffness: sr.stiffness,
                     accumulated: &mut *sr.accumulated,
@@ -537,36 +591,18 @@ fn solve_group_list_velocities<S: Scalar>(
                 solve_tree_velocities(
                     rows,
                     group,
-                    groups.plan(range),
+                    groups.plan(plan),
                     velocities,
                     slop,
                     side,
-                    None,
+                    Some(groups.uncovered()),
                     tree,
                 );
             }
-            GroupSolve::Trees(range) => {
-                for plan in groups.trees(range) {
-                    let side = side.as_mut().map(|sr| SideRows {
-                        stiffness: sr.stiffness,
-                        accumulated: &mut *sr.accumulated,
-                    });
-                    solve_tree_velocities(
-                        rows,
-                        group,
-                        groups.plan(plan),
-                        velocities,
-                        slop,
-                        side,
-                        Some(groups.uncovered()),
-                        tree,
-                    );
-                }
-            }
         }
-        for &ri in group {
-            solve_friction_row(&mut rows[ri], velocities);
-        }
+    }
+    for &ri in group {
+        solve_friction_row(&mut rows[ri], velocities);
     }
 }
 
