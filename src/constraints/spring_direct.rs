@@ -228,6 +228,10 @@ fn solve_factored<S: Scalar>(
 pub(crate) struct DirectScratch<S: Scalar> {
     /// Per row: solved here (its impulse is set and pushed).
     pub(crate) direct: Vec<bool>,
+    /// Per slot: an end of a bounce launched in the spring solve
+    /// (`SpringScratch::launch_bounces`); counts as a row of its group,
+    /// so one stiff spring and a bounce are solved exactly together.
+    pub(crate) launched_ends: Vec<bool>,
     /// Union–find parent per slot.
     parent: Vec<u32>,
     /// Per root slot: the group holds a stiff row / its row count.
@@ -303,6 +307,7 @@ pub(crate) struct DirectScratch<S: Scalar> {
 impl<S: Scalar> Default for DirectScratch<S> {
     fn default() -> Self {
         DirectScratch {
+            launched_ends: Vec::new(),
             direct: Vec::new(),
             parent: Vec::new(),
             stiff: Vec::new(),
@@ -905,6 +910,21 @@ impl<S: Scalar> DirectScratch<S> {
             if is_stiff(row) {
                 self.stiff[root as usize] = true;
             }
+        }
+        // A launched bounce's end counts as a row: against one stiff
+        // spring the sweeps would play the bounce and the spring off each
+        // other along nearly the same line (a pusher on a stiff radial
+        // spring thrown into a wall: rows 0.1 rad apart), and 8 sweeps
+        // leave the spring stretched far beyond its equation.
+        for (slot, _) in self
+            .launched_ends
+            .iter()
+            .enumerate()
+            .take(slots)
+            .filter(|(_, launched)| **launched)
+        {
+            let root = find(&mut self.parent, slot as u32) as usize;
+            self.rows_in[root] += 1;
         }
         let mut any = false;
         for (i, row) in rows.iter().enumerate() {

@@ -7,7 +7,7 @@
 
 use super::spring::theta_for;
 use super::spring_direct::DirectScratch;
-use super::spring_support::SupportScratch;
+use super::spring_support::{SupportRow, SupportScratch};
 use crate::math::{Scalar, Vec2};
 
 /// Most sweeps of one spring solve. A resolved lattice (ω·h ≤ 0.3)
@@ -140,8 +140,12 @@ pub(crate) struct SpringScratch<S: Scalar> {
     pub(crate) direct: DirectScratch<S>,
     /// The last spring's blends (springs of a lattice mostly share them).
     last_blend: Option<BlendCache<S>>,
-    /// Per slot: a radial row moves it (working memory).
-    radial_moved: Vec<bool>,
+    /// Per slot: a spring row moves it (working memory).
+    spring_moved: Vec<bool>,
+    /// Per slot: its earliest bounce's meeting (working memory).
+    first_meet: Vec<S>,
+    /// The slots raised to θ_b = 1 (working memory).
+    raised: Vec<usize>,
 }
 
 impl<S: Scalar> SpringScratch<S> {
@@ -158,33 +162,104 @@ impl<S: Scalar> SpringScratch<S> {
         }
     }
 
-    /// Raises to θ_b = 1 every end of a radial row with θ_b < 1 that a
-    /// support row (a contact) pushed in the last solve; returns whether
-    /// any was raised.
-    pub(crate) fn raise_pushed_radial_ends(&mut self) -> bool {
-        if self.radial.is_empty() || self.supports.rows.iter().all(|c| c.impulse == S::ZERO) {
+    /// Launches the bounces the first solve found (see
+    /// [`crate::constraints`], "Springs and contacts", 4.): a support row
+    /// that carries a bounce and pushed in that solve (the pair meets),
+    /// and is the earliest meeting of each of its two bodies (a row behind
+    /// another, which the sweeps may leave a remnant of impulse, does not
+    /// bounce), now targets the bounce's end velocity; its two ends take
+    /// θ_b = 1 and count as a row of their group for the direct solve.
+    /// Returns whether any was launched.
+    pub(crate) fn launch_bounces(&mut self) -> bool {
+        let rows = &mut self.supports.rows;
+        self.direct.launched_ends.clear();
+        if rows.iter().all(|row| row.bounce.is_none()) {
             return false;
         }
-        let moved = &mut self.radial_moved;
+        let never = S::from_int(1 << 20);
+        let first = &mut self.first_meet;
+        first.clear();
+        first.resize(self.body_theta.len(), never);
+        let pushed = |row: &SupportRow<S>| row.impulse.is_positive();
+        for row in rows.iter().filter(|row| pushed(row)) {
+            if let Some(bounce) = row.bounce {
+                for slot in [row.a as usize, row.b as usize] {
+                    first[slot] = first[slot].min(bounce.meets);
+                }
+            }
+        }
+        let ends = &mut self.direct.launched_ends;
+        ends.clear();
+        ends.resize(self.body_theta.len(), false);
+        let mut any = false;
+        for row in rows.iter_mut() {
+            let Some(mut bounce) = row.bounce else {
+                continue;
+            };
+            let (a, b) = (row.a as usize, row.b as usize);
+            if !pushed(row) || bounce.meets > first[a] || bounce.meets > first[b] {
+                continue;
+            }
+            bounce.floor = row.target;
+            row.bounce = Some(bounce);
+            row.target = row.target.max(bounce.velocity);
+            row.launched = true;
+            for slot in [a, b] {
+                self.body_theta[slot] = S::ONE;
+                ends[slot] = true;
+            }
+            any = true;
+        }
+        any
+    }
+
+    /// Raises to θ_b = 1 every spring-moved end with θ_b < 1 of a support
+    /// row (a contact) that the last solve pushed, or whose end velocities
+    /// `v₀ + (p − v₀)/θ_b` close it beyond its target (the contact solve
+    /// will push it): such an end would carry the lag of
+    /// [`crate::constraints`], "Springs and contacts", 1. Returns whether
+    /// any was raised.
+    pub(crate) fn raise_bound_ends(&mut self, velocities: &[Vec2<S>]) -> bool {
+        if self.supports.rows.is_empty() {
+            return false;
+        }
+        let moved = &mut self.spring_moved;
         moved.clear();
         moved.resize(self.body_theta.len(), false);
-        for row in self.rows.iter().filter(|row| row.radial) {
+        for row in &self.rows {
             for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
                 if w.is_positive() {
                     moved[slot as usize] = true;
                 }
             }
         }
-        let mut raised = false;
-        for contact in self.supports.rows.iter().filter(|c| c.impulse != S::ZERO) {
-            for slot in [contact.a as usize, contact.b as usize] {
-                if moved.get(slot).copied().unwrap_or(false) && self.body_theta[slot] < S::ONE {
-                    self.body_theta[slot] = S::ONE;
-                    raised = true;
-                }
+        let (theta, p) = (&self.body_theta, &self.position_velocities);
+        let lagging = |slot: usize| moved[slot] && theta[slot] < S::ONE;
+        // The velocity a slot ends the substep with: v₀ + Δv, θ_b·Δv = p − v₀.
+        let end = |slot: usize| {
+            let (v, q) = (velocities[slot], p[slot]);
+            if q == v {
+                v
+            } else {
+                v + (q - v).scale(S::ONE.div(theta[slot]))
             }
+        };
+        let raised = &mut self.raised;
+        raised.clear();
+        for row in self.supports.rows.iter().filter(|row| !row.held) {
+            let (a, b) = (row.a as usize, row.b as usize);
+            if !lagging(a) && !lagging(b) {
+                continue;
+            }
+            if row.impulse == S::ZERO && (end(b) - end(a)).dot(row.normal) >= row.target {
+                continue;
+            }
+            raised.extend([a, b].into_iter().filter(|&slot| lagging(slot)));
         }
-        raised
+        for &slot in raised.iter() {
+            self.body_theta[slot] = S::ONE;
+        }
+        !raised.is_empty()
     }
 
     /// Empties the scratch for a substep with `slots` slots (blends ½).
@@ -194,6 +269,7 @@ impl<S: Scalar> SpringScratch<S> {
         self.body_theta.clear();
         self.body_theta.resize(slots, S::ONE.half());
         self.last_blend = None;
+        self.direct.launched_ends.clear();
     }
 
     /// Adds a row between the `ends` (slots, inverse masses; `w_a + w_b >

@@ -58,6 +58,30 @@ pub(crate) struct SupportRow<S: Scalar> {
     pub(crate) contact: u32,
     /// A held row's friction impulse (along `perp(n)`).
     pub(crate) tangent: S,
+    /// The bounce of a contact that meets this substep fast enough to
+    /// bounce (a bounce candidate), if it can meet within the substep.
+    pub(crate) bounce: Option<SupportBounce<S>>,
+    /// The bounce is solved here ([`SupportBounce`]): `target` is its end
+    /// velocity, the impulse is capped, and its pushes are final.
+    pub(crate) launched: bool,
+}
+
+/// A bounce solved inside the spring solve (see [`crate::constraints`],
+/// "Springs and contacts", 4.): the row is driven to the bounce's end
+/// velocity with an impulse of at most `cap`, and never below its
+/// speculative target `floor`.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SupportBounce<S: Scalar> {
+    /// The end velocity of the bounce (`restitution::bounce_end`).
+    pub(crate) velocity: S,
+    /// `(1 + e)·|u₀|·m`: the impulse of the impact itself, from the
+    /// approach `u₀` before any spring acted.
+    pub(crate) cap: S,
+    /// When the pair meets within the substep (`s/|u₀|`): a body's
+    /// earliest meeting bounces here.
+    pub(crate) meets: S,
+    /// The row's speculative target (no closing beyond the gap).
+    pub(crate) floor: S,
 }
 
 /// The support rows of a substep and what they pushed.
@@ -98,7 +122,19 @@ impl<S: Scalar> SupportScratch<S> {
                 .sub(relative.dot(row.normal))
                 .mul(row.effective_mass);
             // μ stays ≥ 0: the new impulse is max(0, μ + wanted).
-            let change = wanted.max(row.impulse.neg());
+            let mut change = wanted.max(row.impulse.neg());
+            if row.launched
+                && let Some(bounce) = row.bounce
+            {
+                // A launched bounce: at most the impact's impulse, but
+                // never closing beyond the gap whatever the cap.
+                let floor = bounce
+                    .floor
+                    .sub(relative.dot(row.normal))
+                    .mul(row.effective_mass)
+                    .max(row.impulse.neg());
+                change = change.min(bounce.cap.sub(row.impulse)).max(floor);
+            }
             if change == S::ZERO {
                 continue;
             }
@@ -108,6 +144,10 @@ impl<S: Scalar> SupportScratch<S> {
             position_velocities[b] += push_b;
             self.pushed[a] -= push_a;
             self.pushed[b] += push_b;
+            if row.launched {
+                self.kept[a] -= push_a;
+                self.kept[b] += push_b;
+            }
             largest = largest.max(change.abs());
         }
         largest
@@ -126,7 +166,8 @@ impl<S: Scalar> SupportScratch<S> {
         }
     }
 
-    /// Clears every row's impulse and every push.
+    /// Clears every row's impulse and every push (launched bounces stay
+    /// launched).
     pub(crate) fn clear_impulses(&mut self) {
         for row in self.rows.iter_mut() {
             row.impulse = S::ZERO;

@@ -70,10 +70,13 @@
 //! square root is exact to an ulp) and the solver's residual in the
 //! speculative gap, which is below the linear slop. With `e = 1` the
 //! flight's energy is kept to rounding (tests: apex drift under 0.01 % in
-//! a minute). When other forces act during the substep (springs, other
-//! contacts), `a_n` ignores them and the instant is off by their share of
-//! the substep's velocity change: first order in `h`, as for the rest of
-//! the integrator. Between two dynamic bodies of equal gravity scale the
+//! a minute). When other forces act during the substep (other contacts),
+//! `a_n` ignores them and the instant is off by their share of the
+//! substep's velocity change: first order in `h`, as for the rest of the
+//! integrator. A bounce that reaches a spring-moved body is not re-timed
+//! here: it is solved with the springs, which must see its motion
+//! (`crate::constraints`, "Springs and contacts", 4.), and leaves the
+//! candidates. Between two dynamic bodies of equal gravity scale the
 //! motion is linear and the method is exact. A bounce through resting
 //! contacts (a ball on a crate on the ground, a striker into a touching
 //! row) is exact in the same sense: the touching contacts transmit it

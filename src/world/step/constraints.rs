@@ -6,9 +6,10 @@
 //! contact solver's indexing without special cases.
 
 use crate::constraints::spring_solve::{RadialRow, SpringScratch, solve_spring_rows};
-use crate::constraints::spring_support::{SupportRow, SupportScratch};
+use crate::constraints::spring_support::{SupportBounce, SupportRow, SupportScratch};
 use crate::constraints::{Anchor, Constraint, constraint_body_pairs};
 use crate::math::{Scalar, Vec2};
+use crate::solver::restitution::bounce_end;
 use crate::solver::row::{ContactConstraint, effective_mass};
 use crate::world::World;
 
@@ -136,7 +137,7 @@ impl<S: Scalar> World<S> {
             }
         }
         if any {
-            self.gather_supports(&mut scratch);
+            self.gather_supports(&mut scratch, h);
         }
         // The gravity kick inside each slot's velocity, for the direct
         // solve's energy check (radial groups only).
@@ -191,15 +192,18 @@ impl<S: Scalar> World<S> {
             (&context.velocities, &mut scratch.position_velocities),
             h,
         );
-        // A body a radial row moves with θ_b < 1 that a contact pushes this
+        // A spring-moved body with θ_b < 1 that a contact pushes this
         // substep, though not touching yet (a speculative row: a folding
-        // chain's links closing on each other), would carry the lag of
-        // `constraints`, "Springs and contacts" (1.), whose cross term has
-        // either sign (20 links with a 100× end at ω·h = 1: +1.7 J): the
-        // sweeps' support rows tell which contacts act; their bodies take
-        // θ_b = 1 and the springs are solved again. (Bendy-only scenes keep
-        // the touching rule above, measured on folding lattices.)
-        if scratch.raise_pushed_radial_ends() {
+        // chain's links closing on each other, a body flung at a wall),
+        // would carry the lag of `constraints`, "Springs and contacts"
+        // (1.), whose cross term has either sign (20 links with a 100× end
+        // at ω·h = 1: +1.7 J; a pair at ω·h = 1 driven at a wall 0.6 away:
+        // +0.19 J of 5): the sweeps' support rows, and the velocities the
+        // bodies end with, tell which contacts act; their spring-moved
+        // ends take θ_b = 1. The bounces that meet are launched (4.), and
+        // the springs are solved again.
+        let raised = scratch.raise_bound_ends(&context.velocities);
+        if scratch.launch_bounces() | raised {
             scratch.finish_rows();
             scratch.position_velocities.clear();
             scratch
@@ -237,6 +241,20 @@ impl<S: Scalar> World<S> {
             context.velocities[i] = v;
             context.spring_dv[i] = v - p;
         }
+        // A launched bounce is final like a held row (below), and the
+        // bounce after the position update leaves it.
+        let mut any_launched = false;
+        for row in scratch.supports.rows.iter_mut().filter(|row| row.launched) {
+            row.held = true;
+            any_launched = true;
+        }
+        if any_launched {
+            let rows = &scratch.supports.rows;
+            context.bounce_candidates.retain(|candidate| {
+                rows.binary_search_by_key(&candidate.row, |row| row.contact)
+                    .map_or(true, |i| !rows[i].launched)
+            });
+        }
         // The contacts solved with a stiff group (held rows) are final:
         // their impulses are in the velocities (the support rows' pushes
         // kept), and the contact solve, which would answer with the mass of
@@ -273,8 +291,10 @@ impl<S: Scalar> World<S> {
 
     /// The substep's contact rows that reach a spring-moved body through
     /// contacts (breadth first over dynamic bodies; an immovable body ends
-    /// a path), as support rows of the spring sweeps (`spring_support.rs`).
-    fn gather_supports(&self, scratch: &mut SpringScratch<S>) {
+    /// a path), as support rows of the spring sweeps (`spring_support.rs`),
+    /// each bounce candidate among them with its bounce (`constraints`,
+    /// "Springs and contacts", 4.).
+    fn gather_supports(&self, scratch: &mut SpringScratch<S>, h: S) {
         let context = &self.step_context;
         let supports = &mut scratch.supports;
         let slots = context.velocities.len();
@@ -372,6 +392,32 @@ impl<S: Scalar> World<S> {
                 touching: c.separation <= slop,
                 contact: index as u32,
                 tangent: S::ZERO,
+                bounce: None,
+                launched: false,
+            });
+        }
+        // The bounce candidates among them (both lists are in contact-row
+        // order): the end velocity of the re-timed bounce
+        // (`solver::restitution`) and the impulse of the impact itself.
+        for candidate in &context.bounce_candidates {
+            let Ok(i) = rows.binary_search_by_key(&candidate.row, |row| row.contact) else {
+                continue;
+            };
+            let c = &contacts[candidate.row as usize];
+            let accel_n = (candidate.accel_b - candidate.accel_a).dot(c.normal);
+            let approach = candidate.approach;
+            let Some(end) = bounce_end(c.separation, approach, accel_n, candidate.restitution, h)
+            else {
+                continue;
+            };
+            rows[i].bounce = Some(SupportBounce {
+                velocity: end.velocity,
+                cap: S::ONE
+                    .add(candidate.restitution)
+                    .mul(approach.neg())
+                    .mul(c.effective_mass),
+                meets: c.separation.max(S::ZERO).div(approach.neg()),
+                floor: rows[i].target,
             });
         }
     }
