@@ -211,19 +211,7 @@ impl<S: Scalar> World<S> {
             if !gained && fastest_after <= limit && !driven() {
                 continue;
             }
-            for &ri in group {
-                let row = &mut constraints[ri];
-                row.normal_impulse = S::ZERO;
-                row.tangent_impulse = S::ZERO;
-                for (slot, inverse_mass) in [
-                    (row.a as usize, row.inverse_mass_a),
-                    (row.b as usize, row.inverse_mass_b),
-                ] {
-                    if inverse_mass.is_positive() {
-                        velocities[slot] = before[slot];
-                    }
-                }
-            }
+            reset_group(constraints, group, velocities, before, 0, &mut []);
             for _ in 0..iterations {
                 for &ri in group {
                     solve_velocity_row(&mut constraints[ri], velocities);
