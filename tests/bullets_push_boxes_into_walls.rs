@@ -458,17 +458,49 @@ fn rows_of_two_driven_along_the_wall_normal_never_overlap() {
     );
 }
 
-/// Still open (issue 13): rows of 2 bodies at 0.5 rad from the wall's
-/// normal and rows of 4 (not traced: with e = 0 as with e = 1). Of
-/// these 1728 rows, 320 fail (604 before the rebound sweep's partners
-/// moved, none of the 320 passing then; of all 2304 with the rows of 2
-/// along the normal: 700 then, 1788 before the hold of followers, 1000
-/// before the stop at meetings).
+/// Four bodies in a row driven along the wall's normal (the family's 576
+/// rows of 4 at angle 0), and rows of 3 and of 8 flush with each other
+/// (spacing 0) along it: no two bodies overlap by more than the slop.
+///
+/// Before the hold took the end approaching the other as a row's follower
+/// (`world/step/punched_followers.rs`), 156 of them failed, with e = 0 as
+/// with e = 1: bodies cut at the wall one by one (each reaching it through
+/// those ahead), the second stopped short by its meeting with the last,
+/// and the third, held behind the last, was taken for the second's
+/// follower; moving away from it, it left the row closed by up to 1.79
+/// (boxes of half size 1 at 2000 units/s; 0.31 with boxes of 0.25, 100×
+/// lighter than the ball, at 300 units/s); and 108 of the rows of 3 and 132
+/// of the rows of 8.
+#[test]
+fn rows_of_four_driven_along_the_wall_normal_never_overlap() {
+    let along = |r: &Row| r.angle == 0.0;
+    let rows: Vec<Row> = rows(4).into_iter().filter(along).collect();
+    assert_eq!(rows.len(), 576);
+    let mut failures = overlapping(&rows).0;
+    for count in [3, 8] {
+        let flush: Vec<Row> = self::rows(count)
+            .into_iter()
+            .filter(along)
+            .map(|r| Row { spacing: 0.0, ..r })
+            .collect();
+        failures.extend(overlapping(&flush).0);
+    }
+    assert!(failures.is_empty(), "{} rows overlap", failures.len());
+}
+
+/// Still open (issue 13): rows of 2 and of 4 bodies at 0.5 rad from the
+/// wall's normal. Of these 1152 rows, 148 fail (with e = 0 as with e = 1;
+/// 164 before the hold's follower was the approaching end, 334 before the
+/// rebound sweep's partners moved; of all 2304 rows: 700 then, 1788
+/// before the hold of followers, 1000 before the stop at meetings). Not
+/// in this family, also open: rows along the normal spaced wider or
+/// longer, e.g. rows of 8 spaced 0.05 (30 of 576 fail) or 0.5 (78), rows
+/// of 6 spaced 0.5 (18), rows of 3 spaced 0.5 (6).
 #[test]
 #[ignore = "open: rows of several bodies (issue 13)"]
 fn rows_of_several_bodies_driven_into_a_wall_still_open() {
     let mut rows: Vec<Row> = rows(2).into_iter().filter(|r| r.angle != 0.0).collect();
-    rows.extend(self::rows(4));
+    rows.extend(self::rows(4).into_iter().filter(|r| r.angle != 0.0));
     let (failures, _) = overlapping(&rows);
     assert!(
         failures.is_empty(),
