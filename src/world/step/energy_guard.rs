@@ -95,7 +95,7 @@ use crate::solver::StepContext;
 use crate::solver::row::{ContactConstraint, solve_velocity_row};
 use crate::solver::row_groups::GroupSolve;
 use crate::solver::tree_solve::SideRows;
-use crate::world::World;
+use crate::world::{Slot, World};
 
 /// Whether the joint-group guard checks `group` (rows ascending, the
 /// `ropes` rope rows first): it holds ropes and contacts, and is solved
@@ -160,55 +160,22 @@ impl<S: Scalar> World<S> {
                 continue;
             }
             let stamp = u32::try_from(g).unwrap_or(u32::MAX - 1);
-            let (mut start, mut end) = (S::Wide::ZERO, S::Wide::ZERO);
-            // The fastest body before the solve, `|v_x| + |v_y|` (≥ |v|).
-            let mut fastest = S::ZERO;
-            // The fastest body after it.
-            let mut fastest_after = S::ZERO;
-            let mut pushed_by_motion = false;
-            for &ri in group {
-                let row = &constraints[ri];
-                for (slot, inverse_mass) in [
-                    (row.a as usize, row.inverse_mass_a),
-                    (row.b as usize, row.inverse_mass_b),
-                ] {
-                    if !inverse_mass.is_positive() {
-                        // An immovable body that moves can feed the group.
-                        pushed_by_motion |= before[slot] != Vec2::ZERO;
-                        continue;
-                    }
-                    if energy_marks[slot] == stamp {
-                        continue;
-                    }
-                    energy_marks[slot] = stamp;
-                    let Some(body) = slots[slot].body.as_ref() else {
-                        continue;
-                    };
-                    let (v0, v) = (before[slot], velocities[slot]);
-                    fastest = fastest.max(v0.x.abs().add(v0.y.abs()));
-                    fastest_after = fastest_after.max(v.x.abs().add(v.y.abs()));
-                    start = start.add(body.mass.wide_mul(v0.dot(v0)));
-                    end = end.add(body.mass.wide_mul(v.dot(v)));
-                }
-            }
-            if pushed_by_motion {
+            let motion = measure_group(
+                constraints,
+                group,
+                slots,
+                before,
+                velocities,
+                energy_marks,
+                stamp,
+            );
+            if motion.pushed_by_motion {
                 continue;
             }
-            let allowance = start.narrow().mul(S::from_ratio(1, 1024));
-            let gained = end > start.add(S::Wide::from_narrow(allowance));
-            let limit = fastest.add(fastest);
-            // No row closed faster than `2·fastest` before the solve
-            // (`|n·(v_b − v_a)| ≤ |v_a| + |v_b|`); one left closing that
-            // much beyond its target was driven, not held.
-            let driven = || {
-                group.iter().any(|&ri| {
-                    let row = &constraints[ri];
-                    let vn =
-                        (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
-                    row.target_velocity.sub(vn) > limit
-                })
-            };
-            if !gained && fastest_after <= limit && !driven() {
+            if !motion.gained_energy()
+                && motion.fastest_after <= motion.speed_limit()
+                && !motion.row_driven()
+            {
                 continue;
             }
             reset_group(constraints, group, velocities, before, 0, &mut []);
@@ -252,41 +219,15 @@ impl<S: Scalar> World<S> {
         let slots = &self.slots;
         let ropes = rope_rows.len();
         let mut stamp = 0u32;
-        let mut past_bounds =
-            |rows: &[ContactConstraint<S>], group: &[usize], velocities: &[Vec2<S>]| {
-                stamp = stamp.wrapping_add(1);
-                let (mut start, mut end) = (S::Wide::ZERO, S::Wide::ZERO);
-                // The fastest body before the solve, `|v_x| + |v_y|` (≥ |v|).
-                let mut fastest = S::ZERO;
-                for &ri in group {
-                    let row = &rows[ri];
-                    for (slot, inverse_mass) in [
-                        (row.a as usize, row.inverse_mass_a),
-                        (row.b as usize, row.inverse_mass_b),
-                    ] {
-                        if !inverse_mass.is_positive() || energy_marks[slot] == stamp {
-                            continue;
-                        }
-                        energy_marks[slot] = stamp;
-                        let Some(body) = slots[slot].body.as_ref() else {
-                            continue;
-                        };
-                        let (v0, v) = (before[slot], velocities[slot]);
-                        fastest = fastest.max(v0.x.abs().add(v0.y.abs()));
-                        start = start.add(body.mass.wide_mul(v0.dot(v0)));
-                        end = end.add(body.mass.wide_mul(v.dot(v)));
-                    }
-                }
-                let allowance = start.narrow().mul(S::from_ratio(1, 1024));
-                let limit = fastest.add(fastest);
-                end > start.add(S::Wide::from_narrow(allowance))
-                    || group.iter().any(|&ri| {
-                        let row = &rows[ri];
-                        let vn = (velocities[row.b as usize] - velocities[row.a as usize])
-                            .dot(row.normal);
-                        row.target_velocity.sub(vn) > limit
-                    })
-            };
+        // The contact guard's speed bound on bodies is not used here (module
+        // notes, "Ropes and contacts").
+        let mut past_bounds = |rows: &[ContactConstraint<S>],
+                               group: &[usize],
+                               velocities: &[Vec2<S>]| {
+            stamp = stamp.wrapping_add(1);
+            let motion = measure_group(rows, group, slots, before, velocities, energy_marks, stamp);
+            motion.gained_energy() || motion.row_driven()
+        };
         for (group, solve, _) in joint_groups.iter_classified() {
             if !joint_group_is_guarded(group, solve, ropes)
                 || !past_bounds(joint_rows, group, velocities)
@@ -346,6 +287,94 @@ impl<S: Scalar> World<S> {
             }
         }
     }
+}
+
+/// What the guards measure of one group after its solve, in one pass
+/// over its rows (module notes: the bounds a converged solve meets).
+struct GroupMotion<S: Scalar> {
+    /// `Σ m·|v₀|²` over the group's movable bodies, before the warm start.
+    energy_before: S::Wide,
+    /// `Σ m·|v|²` after the solve.
+    energy_after: S::Wide,
+    /// The fastest movable body before the solve, `|v_x| + |v_y|` (≥ |v|).
+    fastest_before: S,
+    /// The fastest movable body after it, measured the same way.
+    fastest_after: S,
+    /// The most any row closes beyond its target, `max(b − n·(v_b − v_a))`
+    /// (`S::MIN` for an empty group).
+    deepest_overshoot: S,
+    /// Whether an immovable body of the group moves (it can feed energy in).
+    pushed_by_motion: bool,
+}
+
+impl<S: Scalar> GroupMotion<S> {
+    /// The energy bound: no more than `E₀·(1 + 2⁻¹⁰)` (the fixed-point
+    /// rounding of the sums stays far below the allowance).
+    fn gained_energy(&self) -> bool {
+        let allowance = self.energy_before.narrow().mul(S::from_ratio(1, 1024));
+        self.energy_after > self.energy_before.add(S::Wide::from_narrow(allowance))
+    }
+
+    /// Twice the fastest body before the solve: no row closed faster than
+    /// `2·fastest` then (`|n·(v_b − v_a)| ≤ |v_a| + |v_b|`).
+    fn speed_limit(&self) -> S {
+        self.fastest_before.add(self.fastest_before)
+    }
+
+    /// Whether a row was left closing beyond its target by more than the
+    /// speed limit: driven, not held.
+    fn row_driven(&self) -> bool {
+        self.deepest_overshoot > self.speed_limit()
+    }
+}
+
+/// Measures `group` (rows of `rows`) for the guards: every movable body is
+/// counted once, marked in `marks` with `stamp` (a stamp no other group of
+/// this pass uses).
+fn measure_group<S: Scalar>(
+    rows: &[ContactConstraint<S>],
+    group: &[usize],
+    slots: &[Slot<S>],
+    before: &[Vec2<S>],
+    velocities: &[Vec2<S>],
+    marks: &mut [u32],
+    stamp: u32,
+) -> GroupMotion<S> {
+    let mut motion = GroupMotion {
+        energy_before: S::Wide::ZERO,
+        energy_after: S::Wide::ZERO,
+        fastest_before: S::ZERO,
+        fastest_after: S::ZERO,
+        deepest_overshoot: S::MIN,
+        pushed_by_motion: false,
+    };
+    for &ri in group {
+        let row = &rows[ri];
+        let vn = (velocities[row.b as usize] - velocities[row.a as usize]).dot(row.normal);
+        motion.deepest_overshoot = motion.deepest_overshoot.max(row.target_velocity.sub(vn));
+        for (slot, inverse_mass) in [
+            (row.a as usize, row.inverse_mass_a),
+            (row.b as usize, row.inverse_mass_b),
+        ] {
+            if !inverse_mass.is_positive() {
+                motion.pushed_by_motion |= before[slot] != Vec2::ZERO;
+                continue;
+            }
+            if marks[slot] == stamp {
+                continue;
+            }
+            marks[slot] = stamp;
+            let Some(body) = slots[slot].body.as_ref() else {
+                continue;
+            };
+            let (v0, v) = (before[slot], velocities[slot]);
+            motion.fastest_before = motion.fastest_before.max(v0.x.abs().add(v0.y.abs()));
+            motion.fastest_after = motion.fastest_after.max(v.x.abs().add(v.y.abs()));
+            motion.energy_before = motion.energy_before.add(body.mass.wide_mul(v0.dot(v0)));
+            motion.energy_after = motion.energy_after.add(body.mass.wide_mul(v.dot(v)));
+        }
+    }
+    motion
 }
 
 /// Puts `group`'s movable bodies back to their velocities `before` the
