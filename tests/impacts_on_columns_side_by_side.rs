@@ -579,6 +579,79 @@ fn a_ball_dropped_onto_columns_of_touching_circles_lands_on_the_circle_below() {
     check(&circle_drops(1.0));
 }
 
+/// A ball 10×, 100× or 1 000× a circle bouncing (e = 1) on short columns
+/// of touching or nearly touching circles (3 or 5 per column, 0.02 or
+/// 0.05 across, gaps 0, 1e-4 and 1e-3; two columns struck at the first's
+/// centre, three at the middle's or the last's), thrown from the top or
+/// dropped from 0.37 above, at `speed`. The columns stand on rigid ground,
+/// so the struck column is in effect a rigid floor: no circle moves into
+/// another or the ground, and the energy never rises (the bounds and
+/// their derivation are those of the family at the top of the file).
+fn heavy_bounces(ratios: &[f64], speeds: &[f64]) -> Vec<Case> {
+    let mut cases = Vec::new();
+    for &ratio in ratios {
+        for &speed in speeds {
+            for count in [3, 5] {
+                for thickness in [0.02, 0.05] {
+                    for gap in [0.0, 1e-4, 1e-3] {
+                        for (columns, aim) in [(2, 0.0), (3, 1.0), (3, 2.0)] {
+                            for above in [0.0, 0.37] {
+                                cases.push(Case {
+                                    columns,
+                                    count,
+                                    gap,
+                                    aim,
+                                    circles: true,
+                                    thickness,
+                                    speed,
+                                    ratio,
+                                    e: 1.0,
+                                    above,
+                                    ..Case::base()
+                                });
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    cases
+}
+
+/// Balls 10× and 100× a circle at 50 and 1 000 units/s, and 1 000× at 50.
+/// After the bounce the struck column, pressed down by the catch, moved
+/// down at about a circle's share of the ball's impulse (0.44 units/s, 2
+/// columns of 3, ball 100×, 50 units/s), faster than `|g|·h`, so its rows
+/// to the next column at a slant (0.02 apart along their normals, and
+/// parting) counted as fast rows at a slant holding several bodies: the
+/// group kept sequential impulses, which could not take the catch's
+/// impulse, warm-started into the next substep after the ball had left,
+/// back out of the column in 8 sweeps. The bottom circle left at 465
+/// units/s, and the energy rose to 3 times the ball's. 168 of these 360
+/// bounces failed (box depth up to 390, energy up to 48 times the ball's)
+/// until a row apart whose gap the velocities do not close within the
+/// substep stopped counting (it carries no impulse).
+#[test]
+fn a_heavy_ball_bouncing_on_short_columns_of_circles_leaves_them_standing() {
+    let mut cases = heavy_bounces(&[10.0, 100.0], &[50.0, 1000.0]);
+    cases.extend(heavy_bounces(&[1000.0], &[50.0]));
+    check(&cases);
+}
+
+/// Still open: a ball 1 000× a circle at 1 000 units/s. The exact solve
+/// of the first tick already leaves the columns moving: the struck
+/// column's circles move down at speeds in proportion to their height and
+/// sideways, the next column's circles leave sideways at over 200
+/// units/s, and on the next tick the struck column's circles leave at
+/// `max_speed`. 54 of these 72 bounces fail (57 before rows apart that do
+/// not close stopped counting; 9 of those pass now and 6 others fail).
+#[test]
+#[ignore = "issue 13: a ball 1000x a circle at 1000 units/s on short columns of circles; 54 of 72 bounces fail"]
+fn a_very_heavy_fast_ball_on_short_columns_of_circles_still_open() {
+    check(&heavy_bounces(&[1000.0], &[1000.0]));
+}
+
 /// Columns of circles the families above do not name: touching or 1e-4
 /// or 1e-3 apart; two columns struck at the first's centre, three at the
 /// middle's or the last's, four on the seam between the two inner ones
@@ -626,12 +699,14 @@ fn circle_column_variants() -> Vec<Case> {
 /// heavy or light ball) and the ball on the seam between two circles (its
 /// rows truly at a slant: it pushes the columns apart, which friction
 /// should hold, tan 19.5° = 0.35 < 0.6) still sink circles into each
-/// other. 349 of these 1 152 variants fail (373 before the rows meeting
-/// within the substep were taken soonest first, 511 before the exact
-/// sparse solve, 557 before rows within 2^-10 of an axis counted as along
-/// it), and 291 of the 768 drops.
+/// other. 309 of these 1 152 variants fail (346 before rows apart that
+/// the velocities do not close stopped counting, 373 before the rows
+/// meeting within the substep were taken soonest first, 511 before the
+/// exact sparse solve, 557 before rows within 2^-10 of an axis counted as
+/// along it), and 195 of the 768 drops (291 before rows apart that do not
+/// close stopped counting).
 #[test]
-#[ignore = "issue 13: columns of circles in general; 349 of 1152 variants and 291 of 768 drops fail"]
+#[ignore = "issue 13: columns of circles in general; 309 of 1152 variants and 195 of 768 drops fail"]
 fn columns_of_circles_in_general_still_open() {
     let mut cases = circle_column_variants();
     cases.extend(circle_drops(0.01));

@@ -33,7 +33,7 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0x51e16126bf3937b2),
-    ("balls", 0xfb4763aafa4a48e3),
+    ("balls", 0x38c5ec613803e022),
     ("bullets", 0xe2394485569ea57a),
     ("mixed", 0x474fbc4bc8337ba3),
 ];
