@@ -67,7 +67,9 @@
 //! energy in its first tick, a braced radial one at ω·h = 20 / 100 to
 //! 1.13 / 26 ×. So every group of springs joined through moving bodies
 //! that holds a stiff row (`g·(θ_a·w_a + θ_b·w_b) ≥ 1`, ω·h ≳ 1.65 for equal
-//! masses) and more than one row is solved exactly first
+//! masses) and more than one row is solved exactly first, and so is a
+//! lone radial row whose sweeps do not settle (a pole turning far within
+//! the substep) when no contact joins it to a third body
 //! (`spring_direct.rs`): the system above in body space,
 //!
 //! ```text

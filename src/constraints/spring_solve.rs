@@ -420,8 +420,10 @@ fn start_from_free_impulses<S: Scalar>(
 /// within [`MAX_SPRING_SWEEPS`] (a chain of light links with a heavy end
 /// near the stiffness limit: 20 links, end 100×, ω·h = 1 gained 83 J that
 /// way) leave a residual whose work enters the energy balance, so the
-/// substep then starts over with every group of two or more rows solved
-/// exactly (`spring_direct.rs`). Returns the number of sweeps made.
+/// substep then starts over with every group of two or more rows, and
+/// every lone radial row that no contact joins to a third body (a pole
+/// turning fast: `DirectScratch::find_stiff_groups`), solved exactly
+/// (`spring_direct.rs`). Returns the number of sweeps made.
 pub(crate) fn solve_spring_rows<S: Scalar>(
     rows: &mut [SpringRow<S>],
     radial: &mut [RadialRow<S>],
@@ -446,13 +448,14 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
         (velocities, position_velocities),
         h,
     );
-    if converged || !direct.would_take_more(rows, position_velocities.len()) {
+    if converged || !direct.would_take_more(rows, &supports.rows, position_velocities.len()) {
         return sweeps;
     }
     // The sweeps did not settle (a chain of uneven masses, a long group
-    // near the stiffness limit): their residual would enter the energy
-    // balance, so the step starts over with every group of two or more
-    // rows solved exactly.
+    // near the stiffness limit, a lone radial spring turning fast): their
+    // residual would enter the energy balance, so the step starts over
+    // with every group of two or more rows (and every lone radial row
+    // with no contact to a third body) solved exactly.
     restart(rows, radial, supports, (velocities, position_velocities));
     let solved = direct.solve(
         rows,
