@@ -153,9 +153,11 @@
 //!    contact rows that reach such a group, normal and friction impulses,
 //!    are solved with it through the group's factor
 //!    (`spring_direct.rs`, `couple_contacts`), and the sweeps leave them.
-//!    Their impulses are final: they are not taken back, and the contact
-//!    solve leaves those rows (each asks no more than the normal velocity
-//!    it has after the spring solve, from no warm start). Handed back to
+//!    Their impulses are final: they are not taken back (an end no spring
+//!    moves then takes θ_b = 1, so its velocity gets the push once, as a
+//!    contact gives it), and the contact solve leaves those rows (each
+//!    asks no more than the normal velocity it has after the spring solve,
+//!    from no warm start). Handed back to
 //!    the contact solve, a strike was answered by the struck body alone
 //!    while the group's springs did not move within the substep, and the
 //!    spring stored `½·(ω·h)²·|Δv|²/W` of the contact's velocity change

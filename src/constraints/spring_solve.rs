@@ -262,6 +262,47 @@ impl<S: Scalar> SpringScratch<S> {
         !raised.is_empty()
     }
 
+    /// Gives every end of a held or launched support row that no spring
+    /// moves the blend θ_b = 1: its position velocity `p` then carries the
+    /// row's final push as the contact solver moves a body (all of the
+    /// impulse), and the velocity `v = v₀ + (p − v₀)/θ_b` takes it once.
+    /// At the free body's θ_b = ½ the push was taken twice: a stiff
+    /// chain (ω·h 3 to 100) striking a free ball at rest gave the ball
+    /// twice the impulse the chain lost, and Σ m·v rose by up to the
+    /// chain's whole momentum in the tick of the strike.
+    pub(crate) fn hold_unsprung_ends(&mut self) {
+        if !self
+            .supports
+            .rows
+            .iter()
+            .any(|row| row.held || row.launched)
+        {
+            return;
+        }
+        let moved = &mut self.spring_moved;
+        moved.clear();
+        moved.resize(self.body_theta.len(), false);
+        for row in &self.rows {
+            for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
+                if w.is_positive() {
+                    moved[slot as usize] = true;
+                }
+            }
+        }
+        for row in self
+            .supports
+            .rows
+            .iter()
+            .filter(|row| row.held || row.launched)
+        {
+            for slot in [row.a as usize, row.b as usize] {
+                if !moved[slot] {
+                    self.body_theta[slot] = S::ONE;
+                }
+            }
+        }
+    }
+
     /// Empties the scratch for a substep with `slots` slots (blends ½).
     pub(crate) fn begin(&mut self, slots: usize) {
         self.rows.clear();

@@ -222,6 +222,10 @@ impl<S: Scalar> World<S> {
                 h,
             );
         }
+        // A held row's push on a body no spring moves is a contact impulse,
+        // which moves the position by all of it (θ = 1): with the blend ½
+        // of a free body, v = v₀ + (p − v₀)/θ_b would double it.
+        scratch.hold_unsprung_ends();
         // Velocities: v = v₀ + Δv with θ_b·Δv = p − v₀ (θ_b ∈ [½, 1], so
         // the division is defined); positions follow p, so v − p is the
         // share (1 − θ_b)·Δv they do not see.
