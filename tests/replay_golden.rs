@@ -33,9 +33,9 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0x51e16126bf3937b2),
-    ("balls", 0x4c523f68ae91cdf6),
+    ("balls", 0x3933f0dff959a9c2),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0xecf7fc1f5abd2333),
+    ("mixed", 0xc821180ae01b4fa1),
 ];
 // END GOLDEN
 
