@@ -223,16 +223,8 @@ impl<S: Scalar> SpringScratch<S> {
         if self.supports.rows.is_empty() {
             return false;
         }
-        let moved = &mut self.spring_moved;
-        moved.clear();
-        moved.resize(self.body_theta.len(), false);
-        for row in &self.rows {
-            for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
-                if w.is_positive() {
-                    moved[slot as usize] = true;
-                }
-            }
-        }
+        self.mark_spring_moved();
+        let moved = &self.spring_moved;
         let (theta, p) = (&self.body_theta, &self.position_velocities);
         let lagging = |slot: usize| moved[slot] && theta[slot] < S::ONE;
         // The velocity a slot ends the substep with: v₀ + Δv, θ_b·Δv = p − v₀.
@@ -262,6 +254,21 @@ impl<S: Scalar> SpringScratch<S> {
         !raised.is_empty()
     }
 
+    /// Marks in `spring_moved`, per slot, whether a spring row moves it
+    /// (a movable end of a row this substep).
+    fn mark_spring_moved(&mut self) {
+        let moved = &mut self.spring_moved;
+        moved.clear();
+        moved.resize(self.body_theta.len(), false);
+        for row in &self.rows {
+            for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
+                if w.is_positive() {
+                    moved[slot as usize] = true;
+                }
+            }
+        }
+    }
+
     /// Gives every end of a held or launched support row that no spring
     /// moves the blend θ_b = 1: its position velocity `p` then carries the
     /// row's final push as the contact solver moves a body (all of the
@@ -279,16 +286,8 @@ impl<S: Scalar> SpringScratch<S> {
         {
             return;
         }
-        let moved = &mut self.spring_moved;
-        moved.clear();
-        moved.resize(self.body_theta.len(), false);
-        for row in &self.rows {
-            for (slot, w) in [(row.a, row.inverse_masses.0), (row.b, row.inverse_masses.1)] {
-                if w.is_positive() {
-                    moved[slot as usize] = true;
-                }
-            }
-        }
+        self.mark_spring_moved();
+        let moved = &self.spring_moved;
         for row in self
             .supports
             .rows
