@@ -33,7 +33,7 @@ const SEED: u64 = 2024;
 const GOLDEN: &[(&str, u64)] = &[
     ("stack", 0x7eaf53db48b4e049),
     ("pyramid", 0x51e16126bf3937b2),
-    ("balls", 0x3933f0dff959a9c2),
+    ("balls", 0x732c296e039b7086),
     ("bullets", 0xe2394485569ea57a),
     ("mixed", 0xc821180ae01b4fa1),
 ];
