@@ -69,8 +69,9 @@
 //! that holds a stiff row (`g·(θ_a·w_a + θ_b·w_b) ≥ 1`, ω·h ≳ 1.65 for equal
 //! masses) and more than one row is solved exactly first, and so is a
 //! lone radial row whose sweeps do not settle (a pole turning far within
-//! the substep) when no contact joins it to a third body
-//! (`spring_direct.rs`): the system above in body space,
+//! the substep) when every contact that reaches it is solved with it (no
+//! wall, no third body with contacts of its own beyond the row's ends:
+//! `spring_direct.rs`): the system above in body space,
 //!
 //! ```text
 //! (M·Θ_b⁻¹ + Gᵀ·D_g·G)·(p − v₀) = Gᵀ·(t − D_g·G·v₀),   D_g = diag(g_s),

@@ -115,7 +115,8 @@ const CONTACT_ROUNDS: usize = 4;
 /// "No unknown" in the per-slot index (and "no contact" in
 /// `DirectScratch::contact_partner`).
 const NONE: u32 = u32::MAX;
-/// "Contacts with more than one body" in `DirectScratch::contact_partner`.
+/// "Contacts with more than two bodies" in
+/// `DirectScratch::contact_partner`.
 const MANY: u32 = u32::MAX - 1;
 
 /// A symmetric matrix stored by rows from each row's first nonzero column
@@ -237,10 +238,12 @@ pub(crate) struct DirectScratch<S: Scalar> {
     pub(crate) launched_ends: Vec<bool>,
     /// Union–find parent per slot.
     parent: Vec<u32>,
-    /// Per slot: the one body its support (contact) rows join it to,
-    /// [`NONE`] if none, [`MANY`] if more than one (see
-    /// [`Self::find_stiff_groups`]).
-    contact_partner: Vec<u32>,
+    /// Per slot: the (up to two) bodies its support (contact) rows join it
+    /// to, [`NONE`] where there are fewer, `[MANY; 2]` if more than two
+    /// (see [`Self::find_stiff_groups`]), and whether it is the end of a
+    /// support row that no impulse moves (a wall).
+    contact_partner: Vec<[u32; 2]>,
+    immovable: Vec<bool>,
     /// Per root slot: the group holds a stiff row / its row count.
     stiff: Vec<bool>,
     rows_in: Vec<u32>,
@@ -318,6 +321,7 @@ impl<S: Scalar> Default for DirectScratch<S> {
             direct: Vec::new(),
             parent: Vec::new(),
             contact_partner: Vec::new(),
+            immovable: Vec::new(),
             stiff: Vec::new(),
             rows_in: Vec::new(),
             local: Vec::new(),
@@ -910,11 +914,15 @@ impl<S: Scalar> DirectScratch<S> {
     /// on, the spring ended 0.08 long, and stored 6.1·10³ J of the pair's
     /// 125 J. So the restart of unsettled sweeps solves it exactly too
     /// (Newton, with the energy safeguard of [`Self::keep_energy`]).
-    /// Not where a contact joins one of its ends to a third body (a wall,
-    /// a body it carries): coupled to the direct solve, those contacts
-    /// still gain (open, issue 13: the held rows' outside ends and bodies
-    /// the exact spring flings at a wall they have no row with), so such
-    /// a row keeps the sweeps' view of its contacts as before.
+    /// Only where every contact that reaches it is solved with it
+    /// ([`Self::contacts_only_between`]): no wall on its ends, and a third
+    /// body they touch has no contact beyond the row's two ends. The
+    /// contacts solved with a stiff group are final and the sweeps leave
+    /// them, so a further contact of the third body, solved after them,
+    /// pushes it back into the group unopposed (a middle body pushed into
+    /// the struck one as that bounced off a wall: +18 J of 5), and a wall
+    /// on an end meets bodies the exact spring flings at it (open, issue
+    /// 13); such a row keeps the sweeps' view of its contacts.
     fn find_stiff_groups(
         &mut self,
         rows: &[SpringRow<S>],
@@ -984,33 +992,60 @@ impl<S: Scalar> DirectScratch<S> {
     fn find_contact_partners(&mut self, supports: &[SupportRow<S>], slots: usize) {
         let partner = &mut self.contact_partner;
         partner.clear();
-        partner.resize(slots, NONE);
+        partner.resize(slots, [NONE; 2]);
+        let immovable = &mut self.immovable;
+        immovable.clear();
+        immovable.resize(slots, false);
         let mut meet = |slot: u32, other: u32| {
-            if let Some(p) = partner.get_mut(slot as usize) {
-                *p = if *p == NONE || *p == other {
-                    other
-                } else {
-                    MANY
-                };
+            let Some(p) = partner.get_mut(slot as usize) else {
+                return;
+            };
+            if p[0] == NONE || p[0] == other {
+                p[0] = other;
+            } else if p[1] == NONE || p[1] == other {
+                p[1] = other;
+            } else {
+                *p = [MANY; 2];
             }
         };
         for row in supports {
             meet(row.a, row.b);
             meet(row.b, row.a);
+            for (slot, push) in [(row.a, row.push.0), (row.b, row.push.1)] {
+                if push == Vec2::ZERO
+                    && let Some(fixed) = immovable.get_mut(slot as usize)
+                {
+                    *fixed = true;
+                }
+            }
         }
     }
 
-    /// Whether every support row on the ends of `row` joins its two ends
-    /// (or there is none): [`Self::contact_partner`] is set.
+    /// Whether the contacts that reach a lone radial `row` are all solved
+    /// with it ([`Self::contact_partner`] is set): besides each other, its
+    /// ends touch only movable third bodies whose own contacts are all with
+    /// the row's two ends.
     fn contacts_only_between(&self, row: &SpringRow<S>) -> bool {
-        let partner = |slot: u32| {
+        let partners = |slot: u32| {
             self.contact_partner
                 .get(slot as usize)
                 .copied()
-                .unwrap_or(NONE)
+                .unwrap_or([NONE; 2])
         };
-        let (a, b) = (partner(row.a), partner(row.b));
-        (a == NONE || a == row.b) && (b == NONE || b == row.a)
+        let ends = [row.a, row.b];
+        let only_ends = |q: u32| q == NONE || ends.contains(&q);
+        ends.iter().all(|&end| {
+            partners(end).iter().all(|&q| {
+                if only_ends(q) {
+                    return true;
+                }
+                if q == MANY || self.immovable.get(q as usize).is_none_or(|&fixed| fixed) {
+                    return false;
+                }
+                let outer = partners(q);
+                outer[0] != MANY && outer.iter().all(|&r| only_ends(r))
+            })
+        })
     }
 
     /// Orders the moving bodies of the direct rows (reverse Cuthill–McKee
@@ -1474,7 +1509,9 @@ impl<S: Scalar> DirectScratch<S> {
     /// A free group whose contacts were solved with it (`held`: they are
     /// final, [`Self::couple_contacts`]) takes as its safe point the rigid
     /// translation `c` that its contacts with immovable bodies allow
-    /// ([`Self::rigid_safe_points`]) instead of its mean: at the mean, a
+    /// ([`Self::rigid_safe_points`]), from its mean moved by the pushes of
+    /// its contacts with movable bodies outside it
+    /// ([`Self::carry_outside_pushes`]), instead of its mean: at the mean, a
     /// body striking the ground kept moving into it at the group's
     /// velocity past its final contact rows, and the position pass then
     /// pushed it out alone against the stiff group, which stored the push
@@ -1529,6 +1566,9 @@ impl<S: Scalar> DirectScratch<S> {
                 Vec2::new(sum_x.narrow().div(total), sum_y.narrow().div(total))
             };
             self.rigid.push((mean, mean, total));
+        }
+        if let Some(supports) = held.as_deref() {
+            self.carry_outside_pushes(supports);
         }
         if let Some(supports) = held.as_deref_mut() {
             self.rigid_safe_points(supports, p);
@@ -1669,6 +1709,46 @@ impl<S: Scalar> DirectScratch<S> {
             if largest <= total.mul(S::from_ratio(1, CONTACT_TOLERANCE)) {
                 break;
             }
+        }
+    }
+
+    /// Moves each free group's mean (the safe point of
+    /// [`Self::keep_energy`]) by the impulses of its held contacts with
+    /// movable bodies outside the direct groups: those bodies keep the
+    /// contacts' final pushes whatever blend the group takes, so the group
+    /// must keep them too, or Σ m·v changes by the pushes the blend drops
+    /// (a pusher on a stiff radial spring, ω·h = 100, thrown at 300
+    /// units/s at a middle body touching a third: the third body left at
+    /// −199 units/s with its push, the group fell back to its mean
+    /// before the push, and Σ m·v went from −30 to −49.8). Along the blend
+    /// Σ m·v is then linear between two points that both keep it. At the
+    /// safe point a pair's energy changes by `μ·u_s − ½·μ²/m_o` (`u_s` the
+    /// row's opening rate there, `m_o` the outside body's mass) where the
+    /// outside body gained `½·μ²/m_o` from nothing before.
+    fn carry_outside_pushes(&mut self, supports: &SupportScratch<S>) {
+        for &index in &self.contacts {
+            let row = &supports.rows[index as usize];
+            let (a, b) = (self.local[row.a as usize], self.local[row.b as usize]);
+            let (local, sign, other_push) = match (a == NONE, b == NONE) {
+                (true, false) => (b, S::ONE, row.push.0),
+                (false, true) => (a, S::ONE.neg(), row.push.1),
+                _ => continue,
+            };
+            if other_push == Vec2::ZERO {
+                continue;
+            }
+            let group = self.group_start.partition_point(|&start| start <= local) - 1;
+            let (mean, _, total) = self.rigid[group];
+            if self.anchored[group] || !total.is_positive() {
+                continue;
+            }
+            let n = row.normal;
+            let impulse = Vec2::new(
+                S::mul_sub_mul(n.x, row.impulse, n.y, row.tangent),
+                S::mul_add_mul(n.y, row.impulse, n.x, row.tangent),
+            );
+            let shift = Vec2::new(impulse.x.div(total), impulse.y.div(total)).scale(sign);
+            self.rigid[group] = (mean + shift, mean + shift, total);
         }
     }
 

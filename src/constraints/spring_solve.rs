@@ -217,8 +217,12 @@ impl<S: Scalar> SpringScratch<S> {
     /// row (a contact) that the last solve pushed, or whose end velocities
     /// `v₀ + (p − v₀)/θ_b` close it beyond its target (the contact solve
     /// will push it): such an end would carry the lag of
-    /// [`crate::constraints`], "Springs and contacts", 1. Returns whether
-    /// any was raised.
+    /// [`crate::constraints`], "Springs and contacts", 1. Held rows (solved
+    /// with a stiff group) too: their push is final and sits in `p`, so at
+    /// θ_b = ½ the velocity took it twice while the other end took it once
+    /// (a pusher at ω·h = 1 on a radial spring, thrown at 50 units/s at a
+    /// middle body touching a third: Σ m·v fell from −5 to −3.8 in the
+    /// tick of the strike). Returns whether any was raised.
     pub(crate) fn raise_bound_ends(&mut self, velocities: &[Vec2<S>]) -> bool {
         if self.supports.rows.is_empty() {
             return false;
@@ -238,7 +242,7 @@ impl<S: Scalar> SpringScratch<S> {
         };
         let raised = &mut self.raised;
         raised.clear();
-        for row in self.supports.rows.iter().filter(|row| !row.held) {
+        for row in &self.supports.rows {
             let (a, b) = (row.a as usize, row.b as usize);
             if !lagging(a) && !lagging(b) {
                 continue;
@@ -461,7 +465,7 @@ fn start_from_free_impulses<S: Scalar>(
 /// near the stiffness limit: 20 links, end 100×, ω·h = 1 gained 83 J that
 /// way) leave a residual whose work enters the energy balance, so the
 /// substep then starts over with every group of two or more rows, and
-/// every lone radial row that no contact joins to a third body (a pole
+/// every lone radial row whose contacts are all solved with it (a pole
 /// turning fast: `DirectScratch::find_stiff_groups`), solved exactly
 /// (`spring_direct.rs`). Returns the number of sweeps made.
 pub(crate) fn solve_spring_rows<S: Scalar>(
@@ -495,7 +499,7 @@ pub(crate) fn solve_spring_rows<S: Scalar>(
     // near the stiffness limit, a lone radial spring turning fast): their
     // residual would enter the energy balance, so the step starts over
     // with every group of two or more rows (and every lone radial row
-    // with no contact to a third body) solved exactly.
+    // whose contacts are all solved with it) solved exactly.
     restart(rows, radial, supports, (velocities, position_velocities));
     let solved = direct.solve(
         rows,
