@@ -61,6 +61,24 @@
 //! impulses, and those could not take back the catch's warm-started
 //! impulses after the ball had gone (a circle left at 858 units/s).
 //!
+//! Contradicting rows: rows of the active set can be one constraint with
+//! targets that disagree. A ball 1 000× a circle at 1 000 units/s onto a
+//! column of circles sees, within the speculative margin, every circle
+//! below it and the ground: the rows ball–ground, ball–bottom circle and
+//! bottom circle–ground are dependent (the first is the sum of the
+//! others), with targets −15, −12 and 0 units/s. No impulse meets all
+//! three; the regularised solve splits the difference (two rows short by
+//! 1.5 units/s), and each round of refinement moves the impulses along
+//! the dependent direction by the contradiction over `ε` (about 1e5 per
+//! round), changing no velocity, until the ball–ground row (9e5) would
+//! reach zero and leave the set, eight rounds on. The shortfall stops
+//! halving at once, so the rounds stopped there: the columns were left
+//! moving sideways at up to 11 units/s (the rows between them carry the
+//! split), and the next step threw them at `max_speed`. So when the
+//! refinement stalls, the row the further rounds would take to zero first
+//! is released at once, if the geometric series of those rounds reaches
+//! it (see the rounds below).
+//!
 //! The unilateral rows (contacts push, `λ ≥ 0`) take an active-set loop:
 //! rows carrying impulse or short of their target start active; in each
 //! round, when some active row's accumulated impulse would turn negative,
@@ -713,7 +731,46 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
         }
         let far_short = short.1 != usize::MAX && short.0 > residual.mul_int(4);
         let mut again = !far_short && residual > tolerance && residual < last_residual.half();
+        let previous = last_residual;
         last_residual = residual;
+        if !again && !far_short && previous != S::MAX && residual > tolerance {
+            // The refinement stalls (module notes, "contradicting rows"):
+            // each further round would move the impulses by `x` times the
+            // shortfall's ratio `q = residual/previous` again (a geometric
+            // series, `x·q/(1 − q)` in all), and a row it takes to zero
+            // leaves the set then. The row that gets there first is
+            // released now if the series reaches it: `imp ≤ |x|·q/(1 − q)`,
+            // i.e. `imp·(previous − residual) ≤ |x|·residual` (always when
+            // the shortfall does not shrink at all: a contradiction).
+            let mut first = (S::MAX, usize::MAX);
+            for (k, ri) in plan.rows() {
+                let x = work.rhs[k];
+                if work.active[k] && x.is_negative() {
+                    let rounds = rows[ri].normal_impulse.div(x.neg());
+                    if rounds < first.0 {
+                        first = (rounds, k);
+                    }
+                }
+            }
+            let k = first.1;
+            if k != usize::MAX
+                && rows[plan.row(k)]
+                    .normal_impulse
+                    .wide_mul(previous.sub(residual))
+                    <= work.rhs[k].neg().wide_mul(residual)
+            {
+                let ri = plan.row(k);
+                work.was_released[k] = work.was_released[k].saturating_add(1);
+                work.active[k] = false;
+                let old = rows[ri].normal_impulse;
+                work.released.push((ri, old));
+                rows[ri].normal_impulse = S::ZERO;
+                let row = rows[ri];
+                apply_impulse(&row, old.neg(), velocities);
+                last_residual = S::MAX;
+                continue;
+            }
+        }
         if !again {
             // Rows the solution left short join the set for the next
             // round (a new set: its refinement starts afresh).
