@@ -35,7 +35,7 @@ const GOLDEN: &[(&str, u64)] = &[
     ("pyramid", 0x51e16126bf3937b2),
     ("balls", 0x732c296e039b7086),
     ("bullets", 0xe2394485569ea57a),
-    ("mixed", 0xc821180ae01b4fa1),
+    ("mixed", 0xf79fa3168975e253),
 ];
 // END GOLDEN
 
