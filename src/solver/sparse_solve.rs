@@ -421,6 +421,26 @@ impl<S: Scalar> Default for SparseScratch<S> {
 }
 
 impl<S: Scalar> SparseScratch<S> {
+    /// Takes the row at elimination index `k` (group row `ri`) out of the
+    /// active set: its accumulated impulse is taken back out of its
+    /// bodies' velocities and kept in `released` (put back if the rounds
+    /// run out before a solution is applied), and the release is counted
+    /// (a row released twice marks the active set as cycling).
+    fn release(
+        &mut self,
+        k: usize,
+        row: &mut ContactConstraint<S>,
+        ri: usize,
+        velocities: &mut [Vec2<S>],
+    ) {
+        self.was_released[k] = self.was_released[k].saturating_add(1);
+        self.active[k] = false;
+        let old = row.normal_impulse;
+        self.released.push((ri, old));
+        row.normal_impulse = S::ZERO;
+        apply_impulse(row, old.neg(), velocities);
+    }
+
     /// Offsets and scales for a group in this order.
     fn prepare(&mut self, rows: &[ContactConstraint<S>], plan: SparsePlan) {
         let n = plan.order.len();
@@ -662,13 +682,7 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
                 && (!cycling || k == pull.1)
             {
                 released = true;
-                work.was_released[k] = work.was_released[k].saturating_add(1);
-                work.active[k] = false;
-                let old = rows[ri].normal_impulse;
-                work.released.push((ri, old));
-                rows[ri].normal_impulse = S::ZERO;
-                let row = rows[ri];
-                apply_impulse(&row, old.neg(), velocities);
+                work.release(k, &mut rows[ri], ri, velocities);
             }
         }
         if released {
@@ -760,13 +774,7 @@ pub(crate) fn solve_sparse_velocities<S: Scalar>(
                     <= work.rhs[k].neg().wide_mul(residual)
             {
                 let ri = plan.row(k);
-                work.was_released[k] = work.was_released[k].saturating_add(1);
-                work.active[k] = false;
-                let old = rows[ri].normal_impulse;
-                work.released.push((ri, old));
-                rows[ri].normal_impulse = S::ZERO;
-                let row = rows[ri];
-                apply_impulse(&row, old.neg(), velocities);
+                work.release(k, &mut rows[ri], ri, velocities);
                 last_residual = S::MAX;
                 continue;
             }
