@@ -494,6 +494,32 @@ fn rows_of_four_driven_along_the_wall_normal_never_overlap() {
     assert_none_overlap(&rows);
 }
 
+/// The family's rows of `count` bodies of the projectile's mass, one per
+/// variant of projectile, shape, speed, spacing, e and origin (at the gap
+/// 0.3 only: the gap to a wall that is not there does not matter), for the
+/// free rows below.
+fn free_row_variants(count: usize) -> Vec<Row> {
+    self::rows(count)
+        .into_iter()
+        .filter(|r| r.ratio == 1.0 && r.angle != 0.0 && r.gap == 0.3)
+        .collect()
+}
+
+/// `r` struck at `angle` with no wall, flying inward near the origin or
+/// near the world's bounds (-32 000, -32 000).
+fn free_row(r: Row, angle: f64) -> Row {
+    Row {
+        angle,
+        wall: false,
+        origin: if r.origin == (0.0, 0.0) {
+            r.origin
+        } else {
+            (-32_000.0, -32_000.0)
+        },
+        ..r
+    }
+}
+
 /// A free row (no wall) of 2, 3 or 4 bodies of the projectile's mass,
 /// 0.05 apart along the line of flight, struck at 0.2, 0.5 or 1.2 rad from
 /// the x axis (the family's projectiles, struck shapes, speeds, e 0 and 1;
@@ -516,24 +542,9 @@ fn rows_of_four_driven_along_the_wall_normal_never_overlap() {
 fn free_rows_of_equal_bodies_struck_at_a_slant_never_overlap() {
     let mut rows = Vec::new();
     for count in [2, 3, 4] {
+        let variants = free_row_variants(count);
         for angle in [0.2, 0.5, 1.2] {
-            rows.extend(
-                self::rows(count)
-                    .into_iter()
-                    // One row per variant: the gap to a wall that is not
-                    // there does not matter.
-                    .filter(|r| r.ratio == 1.0 && r.angle != 0.0 && r.gap == 0.3)
-                    .map(|r| Row {
-                        angle,
-                        wall: false,
-                        origin: if r.origin == (0.0, 0.0) {
-                            r.origin
-                        } else {
-                            (-32_000.0, -32_000.0)
-                        },
-                        ..r
-                    }),
-            );
+            rows.extend(variants.iter().map(|&r| free_row(r, angle)));
         }
     }
     assert_eq!(rows.len(), 1296);
@@ -592,30 +603,18 @@ fn rows_of_several_bodies_driven_into_a_wall_still_open() {
 #[test]
 fn flush_rows_of_even_masses_struck_at_a_slant_never_overlap() {
     let mut rows = Vec::new();
-    let free = |r: Row, angle: f64, ratio: f64| Row {
-        angle,
+    let flush = |r: Row, angle: f64, ratio: f64| Row {
         ratio,
         spacing: 0.0,
-        wall: false,
-        origin: if r.origin == (0.0, 0.0) {
-            r.origin
-        } else {
-            (-32_000.0, -32_000.0)
-        },
-        ..r
+        ..free_row(r, angle)
     };
     for count in [2, 3, 4] {
-        // One row per variant: the gap to a wall that is not there does
-        // not matter.
-        let variants: Vec<Row> = self::rows(count)
-            .into_iter()
-            .filter(|r| r.ratio == 1.0 && r.angle != 0.0 && r.gap == 0.3)
-            .collect();
+        let variants = free_row_variants(count);
         for angle in [0.2, 0.5, 1.2] {
-            rows.extend(variants.iter().map(|&r| free(r, angle, 1.0)));
+            rows.extend(variants.iter().map(|&r| flush(r, angle, 1.0)));
         }
         for angle in [0.2, 1.2] {
-            rows.extend(variants.iter().map(|&r| free(r, angle, 2.0)));
+            rows.extend(variants.iter().map(|&r| flush(r, angle, 2.0)));
         }
     }
     for angle in [0.2, 0.5] {
