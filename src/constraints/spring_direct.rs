@@ -1707,50 +1707,48 @@ impl<S: Scalar> DirectScratch<S> {
             let (mut largest, mut total) = (S::ZERO, S::ZERO);
             for k in 0..count {
                 let row = &supports.rows[self.contacts[k] as usize];
-                if !self.outside.is_empty()
+                // The contact's other end: a movable body outside the
+                // groups (its velocity at the safe point so far, moved by
+                // the impulse, and its push `w_o` along the normal) or an
+                // immovable one (its velocity, which no impulse moves).
+                let (group, sign, other, outside) = if !self.outside.is_empty()
                     && let Some((group, sign, o)) = self.outside_contact(row)
                     && let Some(e) = self.outside.iter().position(|e| e.0 == o)
                 {
-                    let (_, c, mass) = self.rigid[group];
-                    let u = self.outside[e].2;
                     let w_o = if o == row.a { row.push.0 } else { row.push.1 }.dot(row.normal);
-                    let rate = row.normal.dot(c - u).mul(sign);
-                    let effective = S::ONE.div(S::ONE.div(mass).add(w_o));
-                    let old = self.safe_impulses[k];
-                    let new = old
-                        .add(row.target.min(S::ZERO).sub(rate).mul(effective))
-                        .max(S::ZERO);
-                    if new == old {
-                        continue;
-                    }
-                    self.safe_impulses[k] = new;
-                    let d = new.sub(old).mul(sign);
-                    self.rigid[group].1 = c + row.normal.scale(d.div(mass));
-                    self.outside[e].2 = u - row.normal.scale(d.mul(w_o));
-                    largest = largest.max(new.sub(old).abs());
-                    total = total.max(new);
-                    continue;
-                }
-                let Some((group, sign)) = self.rigid_contact(row) else {
+                    (group, sign, self.outside[e].2, Some((e, w_o)))
+                } else if let Some((group, sign)) = self.rigid_contact(row) {
+                    let other = if sign.is_positive() {
+                        p[row.a as usize]
+                    } else {
+                        p[row.b as usize]
+                    };
+                    (group, sign, other, None)
+                } else {
                     continue;
                 };
                 let (_, c, mass) = self.rigid[group];
-                let other = if sign.is_positive() {
-                    p[row.a as usize]
-                } else {
-                    p[row.b as usize]
-                };
                 // n·(p_b − p_a) with the group's end at c.
                 let rate = row.normal.dot(c - other).mul(sign);
+                // The pair's effective mass: M against an immovable end,
+                // 1/(1/M + w_o) against an outside body.
+                let effective = match outside {
+                    Some((_, w_o)) => S::ONE.div(S::ONE.div(mass).add(w_o)),
+                    None => mass,
+                };
                 let old = self.safe_impulses[k];
                 let new = old
-                    .add(row.target.min(S::ZERO).sub(rate).mul(mass))
+                    .add(row.target.min(S::ZERO).sub(rate).mul(effective))
                     .max(S::ZERO);
                 if new == old {
                     continue;
                 }
                 self.safe_impulses[k] = new;
-                self.rigid[group].1 = c + row.normal.scale(new.sub(old).mul(sign).div(mass));
+                let d = new.sub(old).mul(sign);
+                self.rigid[group].1 = c + row.normal.scale(d.div(mass));
+                if let Some((e, w_o)) = outside {
+                    self.outside[e].2 = other - row.normal.scale(d.mul(w_o));
+                }
                 largest = largest.max(new.sub(old).abs());
                 total = total.max(new);
             }
